@@ -1,0 +1,90 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+-------------------------------------------------------------------------------
+Application
+    darcyDemFoam
+
+Description
+    Transient solver for the excess pore pressure p of a compressible fluid
+    in a granular packing (Damsgaard et al. 2015, eqs 4-5 in the consistent
+    form of DESIGN.md section 4.2):
+
+        beta mu phi ddt(p) = div(k grad(p))
+                           - mu/(1 - phi) (ddt(phi) + Us & grad(phi))
+
+    p is the deviation from hydrostatic pressure [Pa], phi the porosity, Us
+    the mean grain velocity, k the permeability from a run-time selectable
+    model, mu and beta the fluid's viscosity and compressibility. Dilation
+    (ddt(phi) > 0) lowers p. The time scheme comes from fvSchemes
+    (CrankNicolson recommended), the linear solver from fvSolution.
+
+    The grain phase (porosity, its rate and Us) comes from a run-time
+    selectable solidPhase model; the pressure gradient is handed back to it
+    every step.
+
+    Required: constant/darcyProperties, 0/p; 0/porosity and 0/Us as the
+    solidPhase model asks.
+    Written: p, k, porosity, ddt(porosity), Us, grad(p) and qDarcy, the
+    Darcy flux phi (v_f - Us) = -(k/mu) grad(p) [m/s].
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "fvOptions.H"
+#include "darcyFluid.H"
+#include "permeabilityModel.H"
+#include "solidPhase.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Compressible Darcy pore-pressure solver for water-saturated"
+        " granular material (coupled to DEM grains through solidPhase)"
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Grains to the new time: porosity, its rate, mean grain velocity
+        solid->evolve();
+
+        k = permeability->k(solid->porosity());
+
+        #include "pEqn.H"
+
+        // Pressure gradient back to the grains for the next step
+        gradp = fvc::grad(p);
+        qDarcy = -k/fluid.mu()*gradp;
+        solid->setPressureGradient(gradp, fluid.rho());
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,20 @@
+// dem/Error.h
+// The single exception type of the DEM library. Every refusal (bad parameter, time step above
+// the stability limit, storage overflow, unavailable backend) throws it with a message naming
+// the parameter, the offending value and the limit, so callers can turn it into their own
+// fatal error (e.g. OpenFOAM's FatalError) without parsing.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace dem
+{
+
+class Error : public std::runtime_error
+{
+public:
+    explicit Error(const std::string& message) : std::runtime_error("dem: " + message) {}
+};
+
+} // namespace dem

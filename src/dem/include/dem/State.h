@@ -1,0 +1,48 @@
+// dem/State.h
+// Host-side read-back and restart data. GrainData is the user's view (grains in the order they
+// were added). SystemState is the complete internal state (grain arrays in internal order,
+// neighbour pairs and contact history, walls, clock) for bit-exact restart; treat it as opaque
+// named arrays that a caller may serialise.
+#pragma once
+
+#include "dem/Parameters.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dem
+{
+
+//- Grain state in add order; vectors are 3 per grain interleaved (x0 y0 z0 x1 ...).
+struct GrainData
+{
+    std::vector<double> position;        //!< wrapped into the periodic box at the last rebuild
+    std::vector<double> displacement;    //!< since the grain was added (unwrapped)
+    std::vector<double> velocity;
+    std::vector<double> angularVelocity;
+    std::vector<double> force;           //!< total force of the last step (contacts, gravity, fluid)
+    std::vector<double> torque;
+    std::vector<double> radius;
+    std::vector<double> mass;
+    std::vector<int> contactCount;       //!< touching grain-grain contacts (walls not counted)
+    std::vector<GrainFlag> flag;
+};
+
+//- State of one wall.
+struct WallData
+{
+    double position = 0.0;
+    double velocity = 0.0;
+    double grainForce = 0.0; //!< z-force of the grains on the wall [N] (+ pushes it up)
+    WallSpec spec;
+};
+
+struct SystemState
+{
+    std::map<std::string, std::vector<double>> reals;
+    std::map<std::string, std::vector<std::int64_t>> integers;
+};
+
+} // namespace dem

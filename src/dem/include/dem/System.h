@@ -1,0 +1,109 @@
+// dem/System.h
+// The DEM system: spheres, walls, contacts and the grain <-> fluid-grid coupling, run by a CPU
+// (OpenMP) or CUDA backend chosen at run time. Plain C++ only: this header is included by
+// OpenFOAM code. All refusals throw dem::Error.
+//
+// Typical use:
+//     dem::System dem(params);
+//     dem.addGrains(grains); dem.addWall(bottom); dem.addWall(top);
+//     dem.setFluid(grid, gradP, rhoF);      // force -V grad p - rho_f V g on every grain
+//     dem.step(nSub);
+//     dem.deposit(grid, dtFluid, porosity, predictedPorosity, meanVelocity);
+#pragma once
+
+#include "dem/Error.h"
+#include "dem/Parameters.h"
+#include "dem/State.h"
+#include "dem/UniformGrid.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dem
+{
+
+//- Number of CUDA devices that answer (0 when built without CUDA or without a driver).
+int cudaDeviceCount();
+
+class System
+{
+public:
+    explicit System(const Parameters& parameters);
+    ~System();
+    System(System&&) noexcept;
+    System& operator=(System&&) noexcept;
+    System(const System&) = delete;
+    System& operator=(const System&) = delete;
+
+    // ---- set-up -------------------------------------------------------------------------
+    //- Add grains; returns the index of the first (indices count in add order from 0).
+    int addGrains(const std::vector<GrainInit>& grains);
+    int addGrain(const GrainInit& grain) { return addGrains({grain}); }
+    //- Add a wall; returns its index.
+    int addWall(const WallSpec& wall);
+    //- Change a wall's mode/velocity/mass/stress/friction; its current position is kept.
+    void setWallMotion(int wall, const WallSpec& spec);
+    //- Set the flag of grains `indices`; prescribedVelocity uses (vx, vy) for all of them.
+    void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx = 0.0,
+                       double vy = 0.0);
+    void setViscousDrag(double dragCoefficient);
+    //- Change the time step (checked against the critical step at the next step()).
+    void setTimeStep(double dt);
+
+    // ---- running ------------------------------------------------------------------------
+    //- Advance nSteps DEM steps (velocity Verlet). Throws if dt > maxTimeStepFraction * dt_crit.
+    void step(int nSteps);
+    //- sqrt(m_min / k_max), k_max the largest normal or tangential stiffness in use.
+    double criticalTimeStep() const;
+
+    // ---- read-back ----------------------------------------------------------------------
+    std::size_t grainCount() const;
+    GrainData grains() const;
+    int wallCount() const;
+    WallData wall(int wall) const;
+    //- Sum of x-forces on prescribedVelocity grains (shear resistance of the top layer) [N].
+    double prescribedGrainForceX() const;
+    //- Grain-grain pairs currently touching (each counted once).
+    std::size_t contactCount() const;
+    //- Neighbour-list pairs stored (each counted once).
+    std::size_t pairCount() const;
+    std::size_t neighbourRebuildCount() const;
+    double time() const;
+    long long stepCount() const;
+    double timeStep() const;
+    std::string backendName() const; //!< "cpu" or "cuda"
+    int threadCount() const;         //!< CPU threads in use (1 for cuda)
+    const Parameters& parameters() const;
+
+    // ---- fluid coupling (DESIGN.md 4.3) ---------------------------------------------------
+    //- Deposit the grains on `grid` with trilinear weights to cell centres (mirrored at
+    //- non-periodic sides, wrapped across periodic ones). Outputs (any may be nullptr, each
+    //- grid.cellCount() long, meanVelocity 3 per cell interleaved):
+    //-   porosity          phi = 1 - sum s V_g / V_cell
+    //-   predictedPorosity the same with grains at x + v dtFluid
+    //-   meanVelocity      sum s V_g v / sum s V_g (0 in cells without solid)
+    //-   solidVolume       sum s V_g [m^3]
+    void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
+                 double* predictedPorosity, double* meanVelocity,
+                 double* solidVolume = nullptr) const;
+    //- From now on every step adds f = -V_g grad p(x) - rho_f V_g g to each grain, grad p
+    //- (3 per cell interleaved) interpolated with the deposit's weights. Copied; call again
+    //- after every pressure solution.
+    void setFluid(const UniformGrid& grid, const double* gradP, double fluidDensity);
+    void clearFluid();
+
+    // ---- restart ------------------------------------------------------------------------
+    //- Complete state; importing it into a System built with the same Parameters and walls
+    //- and stepping gives bit-identical results to the uninterrupted run (same backend and
+    //- thread count).
+    SystemState exportState() const;
+    void importState(const SystemState& state);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace dem

@@ -1,0 +1,35 @@
+// HostDevice.h
+// Markers that let one kernel source compile with g++ (OpenMP backend) and nvcc (CUDA backend).
+// DEM_KERNEL_NS gives every kernel type a backend-specific inline namespace, so the two
+// compilations of the same header never define one symbol twice (one-definition rule).
+#pragma once
+
+#if defined(__CUDACC__)
+#define DEM_HD __host__ __device__
+#define DEM_KERNEL_NS cudaKernels
+#else
+#define DEM_HD
+#define DEM_KERNEL_NS cpuKernels
+#endif
+
+#include <Eigen/Core>
+
+namespace dem
+{
+namespace detail
+{
+
+using Eigen::Vector3d;
+
+//- Add into memory that several threads may hit at once (deposit on CUDA).
+DEM_HD inline void atomicAddDouble(double* address, double value)
+{
+#if defined(__CUDA_ARCH__)
+    atomicAdd(address, value);
+#else
+    *address += value; // CPU scatter kernels run serially: deterministic sums
+#endif
+}
+
+} // namespace detail
+} // namespace dem

@@ -1,0 +1,101 @@
+// Views.h
+// Trivially copyable views of the structure-of-arrays storage that kernels receive by value.
+// A vector field of N grains is stored component-blocked: x[0..N), y[0..N), z[0..N).
+#pragma once
+
+#include "backends/HostDevice.h"
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+//- Maximum number of walls (their contact history is stored per grain).
+constexpr int kMaxWalls = 4;
+//- Vectors of history per contact (1: tangential spring; bonds will add more).
+constexpr int kHistoryVectors = 1;
+
+//- Three components with a stride (a component-blocked vector field).
+struct Vec3Array
+{
+    double* data = nullptr;
+    long stride = 0;
+
+    DEM_HD Vector3d operator()(long i) const
+    {
+        return Vector3d(data[i], data[i + stride], data[i + 2 * stride]);
+    }
+    DEM_HD void store(long i, const Vector3d& v) const
+    {
+        data[i] = v.x();
+        data[i + stride] = v.y();
+        data[i + 2 * stride] = v.z();
+    }
+};
+
+//- Per-grain arrays used by the step kernels.
+struct GrainView
+{
+    int n = 0;
+    Vec3Array position, velocity, angularVelocity, force, torque, positionAtBuild;
+    double* prescribedVelocity = nullptr; //!< 2 components (x, y)
+    double* radius = nullptr;
+    double* inverseMass = nullptr;
+    double* inverseInertia = nullptr;
+    double* wallHistory = nullptr; //!< 3 * kMaxWalls components
+    double* wallForce = nullptr;   //!< kMaxWalls components: z-force of grain on wall
+    int* flag = nullptr;
+};
+
+//- Half neighbour list (pair p owned by the lower index) and its per-pair state.
+struct PairView
+{
+    long count = 0;
+    const int* start = nullptr;   //!< N + 1: pairs of owner i are [start[i], start[i+1])
+    const int* partner = nullptr; //!< the other grain, > owner
+    double* history = nullptr;    //!< 3 * kHistoryVectors components, stride count
+    double* reaction = nullptr;   //!< 6 components: force and torque on the partner
+    const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
+    const int* incomingPair = nullptr;
+};
+
+//- Periodic box in x and y; z is never periodic.
+struct BoxView
+{
+    double lower[3] = {0, 0, 0};
+    double length[3] = {1, 1, 1};
+    bool periodic[3] = {false, false, false};
+
+    DEM_HD double minimumImage(double d, int dim) const
+    {
+        if (periodic[dim])
+        {
+            if (d > 0.5 * length[dim])
+                d -= length[dim];
+            else if (d < -0.5 * length[dim])
+                d += length[dim];
+        }
+        return d;
+    }
+    DEM_HD Vector3d separation(const Vector3d& from, const Vector3d& to) const
+    {
+        return Vector3d(minimumImage(to.x() - from.x(), 0), minimumImage(to.y() - from.y(), 1),
+                        to.z() - from.z());
+    }
+};
+
+//- Walls z = position with normal +z (lower) or -z (upper).
+struct WallsView
+{
+    int count = 0;
+    double position[kMaxWalls] = {};
+    double normalZ[kMaxWalls] = {};
+    double velocity[kMaxWalls] = {};
+    bool frictional[kMaxWalls] = {};
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem

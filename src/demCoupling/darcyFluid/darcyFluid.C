@@ -1,0 +1,36 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "darcyFluid.H"
+#include "inputChecks.H"
+#include "fvMesh.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::darcyFluid::darcyFluid(const fvMesh& mesh)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "darcyProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    mu_(inputChecks::getPositive(*this, "mu", dimDynamicViscosity)),
+    beta_(inputChecks::getPositive(*this, "beta", dimless/dimPressure)),
+    rho_(inputChecks::getPositive(*this, "rho", dimDensity))
+{
+    Info<< "Pore fluid: mu = " << mu_.value() << " Pa s, beta = "
+        << beta_.value() << " 1/Pa, rho = " << rho_.value() << " kg/m^3"
+        << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,82 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::inputChecks::getPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name()
+            << " must be > 0, found " << value << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::scalar Foam::inputChecks::getInOpenRange
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar lower,
+    const scalar upper
+)
+{
+    const scalar value = dict.get<scalar>(key);
+
+    if (!(value > lower && value < upper))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name()
+            << " must lie in (" << lower << ", " << upper << "), found "
+            << value << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::dimensionedScalar Foam::inputChecks::getPositive
+(
+    const dictionary& dict,
+    const word& key,
+    const dimensionSet& dims
+)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' not found in " << dict.name()
+            << "; expected '" << key << " " << dims << " <value>;'" << nl
+            << exit(FatalIOError);
+    }
+
+    dimensionedScalar value(key, dims, dict);
+
+    if (!(value.value() > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name()
+            << " must be > 0, found " << value.value() << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,38 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "kozenyCarmanGrainSize.H"
+#include "inputChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace permeabilityModels
+{
+    defineTypeNameAndDebug(kozenyCarmanGrainSize, 0);
+    addToRunTimeSelectionTable
+    (
+        permeabilityModel,
+        kozenyCarmanGrainSize,
+        dictionary
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::permeabilityModels::kozenyCarmanGrainSize::kozenyCarmanGrainSize
+(
+    const dictionary& dict
+)
+:
+    kozenyCarman(dict, sqr(inputChecks::getPositive(dict, "d"))/180.0)
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,125 @@
+"""Run real OpenFOAM case directories from tests and read their output.
+
+A Case is a copy of a template case under tests/run/<name>; entries are
+changed with Debian's foamDictionary, applications are run with their log
+kept in the case, and fields / probes are read back as numpy arrays.
+"""
+
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+
+PROJECT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+RUN_ROOT = os.path.join(PROJECT, "tests", "run")
+
+
+class RunError(RuntimeError):
+    """An application exited non-zero; carries the tail of its log."""
+
+
+class Case:
+    def __init__(self, template, name):
+        src = os.path.join(PROJECT, "tests", "cases", template)
+        self.path = os.path.join(RUN_ROOT, name)
+        shutil.rmtree(self.path, ignore_errors=True)
+        shutil.copytree(src, self.path)
+
+    def file(self, rel):
+        return os.path.join(self.path, rel)
+
+    def set(self, rel, entry, value):
+        """Set a dictionary entry (slash-separated path) to a value string."""
+        subprocess.run(
+            ["foamDictionary", "-entry", entry, "-set", str(value), self.file(rel)],
+            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+    def set_variable(self, rel, name, value):
+        """Set a top-level 'name value;' line by text substitution; for
+        variables that other entries use through $name (foamDictionary
+        would expand them when it rewrites the file)."""
+        path = self.file(rel)
+        text = open(path).read()
+        new, n = re.subn(r"(?m)^(%s\s+)[^;]*;" % re.escape(name), r"\g<1>%s;" % value, text)
+        if n != 1:
+            raise KeyError(f"variable {name} not found once in {path}")
+        open(path, "w").write(new)
+
+    def remove(self, rel, entry):
+        subprocess.run(
+            ["foamDictionary", "-entry", entry, "-remove", self.file(rel)],
+            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+    def run(self, app, *args, expect_fail=False):
+        """Run an application in the case; return its log text."""
+        log = self.file("log." + app)
+        with open(log, "w") as out:
+            rc = subprocess.call([app, "-case", self.path, *args],
+                                 stdout=out, stderr=subprocess.STDOUT)
+        text = open(log).read()
+        if expect_fail:
+            if rc == 0:
+                raise RunError(f"{app} succeeded but was expected to fail")
+            return text
+        if rc != 0:
+            raise RunError(f"{app} failed (exit {rc}) in {self.path}:\n" + text[-3000:])
+        return text
+
+    def times(self):
+        """Written time directories (excluding 0), sorted."""
+        out = []
+        for d in os.listdir(self.path):
+            try:
+                t = float(d)
+            except ValueError:
+                continue
+            if t > 0:
+                out.append((t, d))
+        return sorted(out)
+
+    def field(self, time_name, name):
+        return read_internal_field(os.path.join(self.path, time_name, name))
+
+    def probes(self, field, start="0"):
+        """(times, values[time, probe]) of a probes function object."""
+        path = os.path.join(self.path, "postProcessing", "probes", start, field)
+        rows = []
+        for line in open(path):
+            if line.startswith("#") or not line.strip():
+                continue
+            line = line.replace("(", " ").replace(")", " ")
+            rows.append([float(v) for v in line.split()])
+        data = np.array(rows)
+        return data[:, 0], data[:, 1:]
+
+    def cell_centres(self):
+        """Cell centres from 'postProcess -func writeCellCentres' at time 0."""
+        self.run("postProcess", "-func", "writeCellCentres", "-time", "0")
+        return read_internal_field(os.path.join(self.path, "0", "C"))
+
+
+def read_internal_field(path):
+    """internalField of an ASCII OpenFOAM volField as a numpy array."""
+    text = open(path).read()
+    body = text[text.index("internalField"):]
+    head = body[:200]
+    m = re.match(r"internalField\s+uniform\s+([^;]+);", head)
+    if m:
+        value = m.group(1).strip()
+        if value.startswith("("):
+            return np.array([float(v) for v in value.strip("()").split()])
+        return np.array([float(value)])
+    m = re.match(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", body)
+    if not m:
+        raise ValueError(f"cannot parse internalField of {path}")
+    n = int(m.group(2))
+    start = m.end()
+    end = body.index(";", start)
+    values = body[start:end].rstrip().rstrip(")")
+    values = values.replace("(", " ").replace(")", " ")
+    arr = np.array([float(v) for v in values.split()])
+    if m.group(1) == "vector":
+        arr = arr.reshape(n, 3)
+    return arr
