@@ -1,5 +1,8 @@
-"""pytest set-up: make tests/lib importable."""
+"""pytest set-up: tests/lib (case helpers) and bin/ (the darcydem Python
+package: analytic solutions, plotting) become importable."""
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "lib"))
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "bin"))

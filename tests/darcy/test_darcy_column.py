@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from foamcase import Case
-from exact import drained_column_cell_mean, periodic_top, undrained_pressure_change
+from darcydem.analytic import drained_column_cell_mean, periodic_top, undrained_pressure_change
 
 H = 0.1
 K, MU, BETA, PHI = 1e-14, 1e-3, 4.5e-10, 0.4

@@ -10,7 +10,7 @@ import re
 import shutil
 import subprocess
 
-import numpy as np
+from darcydem.foamfiles import read_internal_field, read_probes, time_dirs
 
 PROJECT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RUN_ROOT = os.path.join(PROJECT, "tests", "run")
@@ -68,58 +68,17 @@ class Case:
         return text
 
     def times(self):
-        """Written time directories (excluding 0), sorted."""
-        out = []
-        for d in os.listdir(self.path):
-            try:
-                t = float(d)
-            except ValueError:
-                continue
-            if t > 0:
-                out.append((t, d))
-        return sorted(out)
+        """Written time directories after 0 as sorted (time, name) pairs."""
+        return time_dirs(self.path)
 
     def field(self, time_name, name):
         return read_internal_field(os.path.join(self.path, time_name, name))
 
     def probes(self, field, start="0"):
         """(times, values[time, probe]) of a probes function object."""
-        path = os.path.join(self.path, "postProcessing", "probes", start, field)
-        rows = []
-        for line in open(path):
-            if line.startswith("#") or not line.strip():
-                continue
-            line = line.replace("(", " ").replace(")", " ")
-            rows.append([float(v) for v in line.split()])
-        data = np.array(rows)
-        return data[:, 0], data[:, 1:]
+        return read_probes(os.path.join(self.path, "postProcessing", "probes", start, field))
 
     def cell_centres(self):
         """Cell centres from 'postProcess -func writeCellCentres' at time 0."""
         self.run("postProcess", "-func", "writeCellCentres", "-time", "0")
         return read_internal_field(os.path.join(self.path, "0", "C"))
-
-
-def read_internal_field(path):
-    """internalField of an ASCII OpenFOAM volField as a numpy array."""
-    text = open(path).read()
-    body = text[text.index("internalField"):]
-    head = body[:200]
-    m = re.match(r"internalField\s+uniform\s+([^;]+);", head)
-    if m:
-        value = m.group(1).strip()
-        if value.startswith("("):
-            return np.array([float(v) for v in value.strip("()").split()])
-        return np.array([float(value)])
-    m = re.match(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", body)
-    if not m:
-        raise ValueError(f"cannot parse internalField of {path}")
-    n = int(m.group(2))
-    start = m.end()
-    end = body.index(";", start)
-    values = body[start:end].rstrip().rstrip(")")
-    values = values.replace("(", " ").replace(")", " ")
-    arr = np.array([float(v) for v in values.split()])
-    if m.group(1) == "vector":
-        arr = arr.reshape(n, 3)
-    return arr

@@ -1,4 +1,4 @@
-"""Closed-form references of VALIDATION.md section 1 (computed, never pasted)."""
+"""Closed-form references of VALIDATION.md (computed, never pasted)."""
 
 import numpy as np
 

@@ -1,0 +1,79 @@
+// OmpExecution.h
+// CPU backend of the kernels: Thrust's OpenMP system for storage, sorting and scans, plain
+// OpenMP loops (static schedule) for the per-grain kernels. Reductions are deterministic for
+// a given thread count, so a restarted run repeats the uninterrupted one bit for bit.
+#pragma once
+
+#include <thrust/system/omp/execution_policy.h>
+#include <thrust/system/omp/vector.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace dem
+{
+namespace detail
+{
+
+struct OmpExecution
+{
+    template <class T>
+    using Vector = thrust::omp::vector<T>;
+
+    static auto policy() { return thrust::omp::par; }
+    static const char* name() { return "cpu"; }
+
+    template <class F>
+    static void forEach(int n, const F& f)
+    {
+#pragma omp parallel for schedule(static)
+        for (int i = 0; i < n; ++i)
+            f(i);
+    }
+
+    //- Kernels that add into shared cells: serial on the CPU (deterministic, and cheap next to
+    //- a fluid step).
+    template <class F>
+    static void forEachScatter(int n, const F& f)
+    {
+        for (int i = 0; i < n; ++i)
+            f(i);
+    }
+
+    //- max(0, f(0), ..., f(n-1)); f may have side effects (each i runs once).
+    template <class F>
+    static double maxOf(int n, const F& f)
+    {
+        double result = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : result)
+        for (int i = 0; i < n; ++i)
+            result = std::max(result, f(i));
+        return result;
+    }
+
+    //- Sum of f(i) in an order fixed by n and the thread count.
+    template <class F>
+    static double sumOf(int n, const F& f)
+    {
+        const int threads = omp_get_max_threads();
+        std::vector<double> partial(threads, 0.0);
+#pragma omp parallel num_threads(threads)
+        {
+            const int t = omp_get_thread_num(), used = omp_get_num_threads();
+            const long first = long(n) * t / used, last = long(n) * (t + 1) / used;
+            double s = 0.0;
+            for (long i = first; i < last; ++i)
+                s += f(int(i));
+            partial[t] = s;
+        }
+        double sum = 0.0;
+        for (double s : partial)
+            sum += s;
+        return sum;
+    }
+};
+
+} // namespace detail
+} // namespace dem

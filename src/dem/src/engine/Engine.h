@@ -1,0 +1,64 @@
+// Engine.h
+// The backend-neutral interface between dem::System (plain C++) and the engines that own the
+// grain storage and run the kernels: EngineImpl<OmpExecution> (g++) and
+// EngineImpl<CudaExecution> (nvcc). No Thrust or CUDA type appears here.
+#pragma once
+
+#include "dem/Parameters.h"
+#include "dem/State.h"
+#include "dem/UniformGrid.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dem
+{
+namespace detail
+{
+
+class Engine
+{
+public:
+    virtual ~Engine() = default;
+
+    virtual void addGrains(const std::vector<GrainInit>& grains) = 0;
+    virtual int addWall(const WallSpec& wall) = 0;
+    virtual void setWallMotion(int wall, const WallSpec& spec) = 0;
+    virtual void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
+                               double vy) = 0;
+    virtual void setViscousDrag(double drag) = 0;
+    virtual void setTimeStep(double dt) = 0;
+    virtual void step(int nSteps) = 0;
+
+    virtual std::size_t grainCount() const = 0;
+    virtual double minimumMass() const = 0;
+    virtual GrainData grains() const = 0;
+    virtual int wallCount() const = 0;
+    virtual WallData wall(int wall) const = 0;
+    virtual double prescribedGrainForceX() const = 0;
+    virtual std::size_t contactCount() const = 0;
+    virtual std::size_t pairCount() const = 0;
+    virtual std::size_t rebuildCount() const = 0;
+    virtual double time() const = 0;
+    virtual long long stepCount() const = 0;
+    virtual std::string name() const = 0;
+    virtual int threads() const = 0;
+
+    virtual void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
+                         double* predictedPorosity, double* meanVelocity,
+                         double* solidVolume) const = 0;
+    virtual void setFluid(const UniformGrid& grid, const double* gradP, double density) = 0;
+    virtual void clearFluid() = 0;
+
+    virtual SystemState exportState() const = 0;
+    virtual void importState(const SystemState& state) = 0;
+};
+
+std::unique_ptr<Engine> makeCpuEngine(const Parameters& parameters);
+//- Throws dem::Error when the library was built without CUDA or no device answers.
+std::unique_ptr<Engine> makeCudaEngine(const Parameters& parameters);
+
+} // namespace detail
+} // namespace dem

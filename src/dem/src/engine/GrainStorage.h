@@ -1,0 +1,184 @@
+// GrainStorage.h
+// RAII structure-of-arrays storage of the grains on one backend. Fields are registered in
+// one table (name, components), so appending grains, re-sorting, export and import treat every
+// field alike; a new per-grain quantity (e.g. capsule orientation, already present) is one
+// table entry. Components are blocked: component c of grain i is at c * N + i.
+#pragma once
+
+#include "kernels/Views.h"
+
+#include <thrust/copy.h>
+#include <thrust/fill.h>
+#include <thrust/gather.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dem
+{
+namespace detail
+{
+
+enum RealField
+{
+    fPosition,
+    fVelocity,
+    fAngularVelocity,
+    fForce,
+    fTorque,
+    fPositionAtBuild,
+    fOrigin, //!< unwrapped position when added (displacement read-back)
+    fPrescribedVelocity,
+    fOrientation, //!< unit quaternion (w, x, y, z); carried for non-spherical grains
+    fRadius,
+    fInverseMass,
+    fInverseInertia,
+    fWallHistory,
+    fWallForce,
+    kRealFieldCount
+};
+
+enum IntField
+{
+    fFlag,
+    fId, //!< add-order index of the grain
+    fImage, //!< periodic images crossed in x and y
+    kIntFieldCount
+};
+
+struct FieldInfo
+{
+    const char* name;
+    int components;
+};
+
+inline const FieldInfo& realFieldInfo(int f)
+{
+    static const FieldInfo table[kRealFieldCount] = {
+        {"position", 3},       {"velocity", 3},     {"angularVelocity", 3},
+        {"force", 3},          {"torque", 3},       {"positionAtBuild", 3},
+        {"origin", 3},         {"prescribedVelocity", 2}, {"orientation", 4},
+        {"radius", 1},         {"inverseMass", 1},  {"inverseInertia", 1},
+        {"wallHistory", 3 * kMaxWalls}, {"wallForce", kMaxWalls}};
+    return table[f];
+}
+
+inline const FieldInfo& intFieldInfo(int f)
+{
+    static const FieldInfo table[kIntFieldCount] = {{"flag", 1}, {"id", 1}, {"image", 2}};
+    return table[f];
+}
+
+template <class Exec>
+class GrainStorage
+{
+public:
+    template <class T>
+    using Vec = typename Exec::template Vector<T>;
+
+    int size() const { return n_; }
+
+    double* real(int f) { return thrust::raw_pointer_cast(reals_[f].data()); }
+    int* integer(int f) { return thrust::raw_pointer_cast(ints_[f].data()); }
+    Vec3Array vec3(int f) { return Vec3Array{real(f), n_}; }
+
+    GrainView view()
+    {
+        GrainView g;
+        g.n = n_;
+        g.position = vec3(fPosition);
+        g.velocity = vec3(fVelocity);
+        g.angularVelocity = vec3(fAngularVelocity);
+        g.force = vec3(fForce);
+        g.torque = vec3(fTorque);
+        g.positionAtBuild = vec3(fPositionAtBuild);
+        g.prescribedVelocity = real(fPrescribedVelocity);
+        g.radius = real(fRadius);
+        g.inverseMass = real(fInverseMass);
+        g.inverseInertia = real(fInverseInertia);
+        g.wallHistory = real(fWallHistory);
+        g.wallForce = real(fWallForce);
+        g.flag = integer(fFlag);
+        return g;
+    }
+
+    //- Host copies, component-blocked.
+    std::vector<double> hostReal(int f) const { return toHost(reals_[f]); }
+    std::vector<int> hostInt(int f) const { return toHost(ints_[f]); }
+    void setReal(int f, const std::vector<double>& v) { fromHost(reals_[f], v); }
+    void setInt(int f, const std::vector<int>& v) { fromHost(ints_[f], v); }
+
+    //- Append grains given component-blocked host arrays of `added` grains per field.
+    void append(int added, const std::array<std::vector<double>, kRealFieldCount>& reals,
+                const std::array<std::vector<int>, kIntFieldCount>& ints)
+    {
+        const int m = n_ + added;
+        for (int f = 0; f < kRealFieldCount; ++f)
+            fromHost(reals_[f], merge(hostReal(f), reals[f], realFieldInfo(f).components, m));
+        for (int f = 0; f < kIntFieldCount; ++f)
+            fromHost(ints_[f], merge(hostInt(f), ints[f], intFieldInfo(f).components, m));
+        n_ = m;
+    }
+
+    //- Reorder every field: new grain i = old grain order[i].
+    void permute(const Vec<int>& order)
+    {
+        permuteAll(reals_, realFieldInfo, scratchReal_, order);
+        permuteAll(ints_, intFieldInfo, scratchInt_, order);
+    }
+
+    //- Replace all fields (import); sizes are checked by the caller.
+    void resizeForImport(int n) { n_ = n; }
+
+private:
+    template <class T>
+    static std::vector<T> toHost(const Vec<T>& v)
+    {
+        std::vector<T> h(v.size());
+        thrust::copy(v.begin(), v.end(), h.begin());
+        return h;
+    }
+    template <class T>
+    static void fromHost(Vec<T>& v, const std::vector<T>& h)
+    {
+        v.resize(h.size());
+        thrust::copy(h.begin(), h.end(), v.begin());
+    }
+    template <class T>
+    std::vector<T> merge(const std::vector<T>& old, const std::vector<T>& added, int components,
+                         int m) const
+    {
+        const int k = m - n_;
+        std::vector<T> out(std::size_t(components) * m);
+        for (int c = 0; c < components; ++c)
+        {
+            std::copy(old.begin() + std::size_t(c) * n_, old.begin() + std::size_t(c + 1) * n_,
+                      out.begin() + std::size_t(c) * m);
+            std::copy(added.begin() + std::size_t(c) * k, added.begin() + std::size_t(c + 1) * k,
+                      out.begin() + std::size_t(c) * m + n_);
+        }
+        return out;
+    }
+    template <class T, std::size_t F, class Info>
+    void permuteAll(std::array<Vec<T>, F>& fields, Info info, Vec<T>& scratch, const Vec<int>& order)
+    {
+        for (std::size_t f = 0; f < F; ++f)
+        {
+            scratch.resize(fields[f].size());
+            for (int c = 0; c < info(int(f)).components; ++c)
+                thrust::gather(Exec::policy(), order.begin(), order.end(),
+                               fields[f].begin() + long(c) * n_, scratch.begin() + long(c) * n_);
+            fields[f].swap(scratch);
+        }
+    }
+
+    int n_ = 0;
+    std::array<Vec<double>, kRealFieldCount> reals_;
+    std::array<Vec<int>, kIntFieldCount> ints_;
+    Vec<double> scratchReal_;
+    Vec<int> scratchInt_;
+};
+
+} // namespace detail
+} // namespace dem

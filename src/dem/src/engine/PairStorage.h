@@ -1,0 +1,50 @@
+// PairStorage.h
+// RAII storage of the half neighbour list (CSR by owner), its per-pair state (contact history,
+// partner reactions) and the transposed list (pairs by partner). Grows with the packing; a
+// limit set by Parameters::maxPairsPerGrain is enforced with an error, never by dropping.
+#pragma once
+
+#include "kernels/Views.h"
+
+namespace dem
+{
+namespace detail
+{
+
+template <class Exec>
+struct PairStorage
+{
+    template <class T>
+    using Vec = typename Exec::template Vector<T>;
+
+    Vec<int> start{1, 0}, partner, incomingStart{1, 0}, incomingPair;
+    Vec<double> history, reaction;
+
+    long count() const { return long(partner.size()); }
+
+    PairView view()
+    {
+        PairView v;
+        v.count = count();
+        v.start = thrust::raw_pointer_cast(start.data());
+        v.partner = thrust::raw_pointer_cast(partner.data());
+        v.history = thrust::raw_pointer_cast(history.data());
+        v.reaction = thrust::raw_pointer_cast(reaction.data());
+        v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
+        v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
+        return v;
+    }
+
+    void swap(PairStorage& other)
+    {
+        start.swap(other.start);
+        partner.swap(other.partner);
+        incomingStart.swap(other.incomingStart);
+        incomingPair.swap(other.incomingPair);
+        history.swap(other.history);
+        reaction.swap(other.reaction);
+    }
+};
+
+} // namespace detail
+} // namespace dem

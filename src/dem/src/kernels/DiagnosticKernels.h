@@ -1,0 +1,81 @@
+// DiagnosticKernels.h
+// Small per-grain functors for read-back reductions: touching contacts, wall forces and the
+// shear force on prescribed-velocity grains.
+#pragma once
+
+#include "kernels/StepKernels.h"
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+//- Touching pairs of grain i: owned ones only (each pair once) or owned + incoming.
+struct TouchingPairs
+{
+    GrainView g;
+    PairView pairs;
+    BoxView box;
+    bool bothSides;
+    int* perGrain; //!< optional output
+
+    DEM_HD bool touching(int i, int j) const
+    {
+        const double sum = g.radius[i] + g.radius[j];
+        return box.separation(g.position(i), g.position(j)).squaredNorm() < sum * sum;
+    }
+
+    DEM_HD double operator()(int i) const
+    {
+        int count = 0;
+        for (int p = pairs.start[i]; p < pairs.start[i + 1]; ++p)
+            count += touching(i, pairs.partner[p]);
+        if (bothSides)
+            for (int q = pairs.incomingStart[i]; q < pairs.incomingStart[i + 1]; ++q)
+            {
+                const int p = pairs.incomingPair[q];
+                if (p < 0)
+                    continue;
+                count += touchingOwnerOf(i, p);
+            }
+        if (perGrain)
+            perGrain[i] = count;
+        return count;
+    }
+
+    DEM_HD int touchingOwnerOf(int j, int p) const
+    {
+        // the owner of pair p is the grain whose range [start[i], start[i+1]) holds p
+        int lo = 0, hi = g.n - 1;
+        while (lo < hi)
+        {
+            const int mid = (lo + hi + 1) / 2;
+            if (pairs.start[mid] <= p)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        return touching(lo, j);
+    }
+};
+
+struct ComponentOf
+{
+    const double* values;
+    DEM_HD double operator()(int i) const { return values[i]; }
+};
+
+struct PrescribedForceX
+{
+    GrainView g;
+    DEM_HD double operator()(int i) const
+    {
+        return g.flag[i] == kFlagPrescribed ? g.force.data[i] : 0.0;
+    }
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem

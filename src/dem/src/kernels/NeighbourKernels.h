@@ -1,0 +1,235 @@
+// NeighbourKernels.h
+// Neighbour search on a uniform cell grid: grains are sorted by cell (cellStart[c] is the first
+// grain of cell c), pairs closer than r_i + r_j + skin are listed once, owned by the lower
+// index. Count and fill kernels share one traversal, so their results always agree. The
+// history transfer keeps each contact's tangential spring across rebuilds and re-sorting.
+#pragma once
+
+#include "kernels/Views.h"
+
+#include <cmath>
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+struct CellGridView
+{
+    double lower[3] = {0, 0, 0};
+    double inverseCellSize[3] = {1, 1, 1};
+    int n[3] = {1, 1, 1};
+    bool periodic[3] = {false, false, false};
+    const int* cellStart = nullptr; //!< cellCount + 1 entries
+
+    DEM_HD int coordinate(double x, int d) const
+    {
+        int c = int(std::floor((x - lower[d]) * inverseCellSize[d]));
+        if (periodic[d])
+        {
+            c %= n[d];
+            return c < 0 ? c + n[d] : c;
+        }
+        return c < 0 ? 0 : (c >= n[d] ? n[d] - 1 : c);
+    }
+    DEM_HD int cellOf(const Vector3d& x) const
+    {
+        return coordinate(x.x(), 0) + n[0] * (coordinate(x.y(), 1) + n[1] * coordinate(x.z(), 2));
+    }
+
+    //- Call visit(j) for every grain j in the cells around x (each cell once).
+    template <class Visit>
+    DEM_HD void forEachNearbyGrain(const Vector3d& x, Visit&& visit) const
+    {
+        int centre[3], first[3], last[3];
+        for (int d = 0; d < 3; ++d)
+        {
+            centre[d] = coordinate(x[d], d);
+            if (periodic[d])
+            {
+                first[d] = n[d] >= 3 ? -1 : 0; // fewer than 3 cells: visit each once
+                last[d] = n[d] >= 2 ? 1 : 0;
+            }
+            else
+            {
+                first[d] = centre[d] > 0 ? -1 : 0;
+                last[d] = centre[d] < n[d] - 1 ? 1 : 0;
+            }
+        }
+        for (int dz = first[2]; dz <= last[2]; ++dz)
+            for (int dy = first[1]; dy <= last[1]; ++dy)
+                for (int dx = first[0]; dx <= last[0]; ++dx)
+                {
+                    const int cx = wrap(centre[0] + dx, 0), cy = wrap(centre[1] + dy, 1);
+                    const int cell = cx + n[0] * (cy + n[1] * (centre[2] + dz));
+                    for (int j = cellStart[cell]; j < cellStart[cell + 1]; ++j)
+                        visit(j);
+                }
+    }
+
+    DEM_HD int wrap(int c, int d) const
+    {
+        if (!periodic[d])
+            return c;
+        return c < 0 ? c + n[d] : (c >= n[d] ? c - n[d] : c);
+    }
+};
+
+//- Wrap positions into the periodic box, counting the images crossed (for displacements).
+struct WrapIntoBox
+{
+    Vec3Array position;
+    int* image; //!< 2 components (x, y)
+    BoxView box;
+    int n;
+
+    DEM_HD void operator()(int i) const
+    {
+        for (int d = 0; d < 2; ++d)
+        {
+            if (!box.periodic[d])
+                continue;
+            double& x = position.data[i + d * position.stride];
+            const double shift = std::floor((x - box.lower[d]) / box.length[d]);
+            if (shift != 0.0)
+            {
+                x -= shift * box.length[d];
+                image[i + d * n] += int(shift);
+            }
+        }
+    }
+};
+
+struct CellKey
+{
+    Vec3Array position;
+    CellGridView cells;
+    int* key;
+
+    DEM_HD void operator()(int i) const { key[i] = cells.cellOf(position(i)); }
+};
+
+//- Shared neighbour test: lower = true lists partners j > i, false lists j < i.
+struct NeighbourSearch
+{
+    Vec3Array position;
+    const double* radius;
+    BoxView box;
+    CellGridView cells;
+    double skin;
+
+    template <class Visit>
+    DEM_HD void forEachNeighbour(int i, bool higher, Visit&& visit) const
+    {
+        const Vector3d x = position(i);
+        const double ri = radius[i];
+        cells.forEachNearbyGrain(x, [&](int j) {
+            if (higher ? j <= i : j >= i)
+                return;
+            const double cutoff = (ri + radius[j]) + skin;
+            if (box.separation(x, position(j)).squaredNorm() < cutoff * cutoff)
+                visit(j);
+        });
+    }
+};
+
+struct CountNeighbours
+{
+    NeighbourSearch search;
+    bool higher;
+    int* count;
+
+    DEM_HD void operator()(int i) const
+    {
+        int c = 0;
+        search.forEachNeighbour(i, higher, [&](int) { ++c; });
+        count[i] = c;
+    }
+};
+
+struct FillOwnedPairs
+{
+    NeighbourSearch search;
+    const int* start;
+    int* partner;
+
+    DEM_HD void operator()(int i) const
+    {
+        int p = start[i];
+        search.forEachNeighbour(i, true, [&](int j) { partner[p++] = j; });
+    }
+};
+
+//- For grain j, the indices of the pairs (owned by lower grains) in which it is the partner.
+struct FillIncomingPairs
+{
+    NeighbourSearch search;
+    const int* start;
+    const int* partner;
+    const int* incomingStart;
+    int* incomingPair;
+
+    DEM_HD void operator()(int j) const
+    {
+        int q = incomingStart[j];
+        search.forEachNeighbour(j, false, [&](int i) {
+            int found = -1;
+            for (int p = start[i]; p < start[i + 1]; ++p)
+                if (partner[p] == j)
+                    found = p;
+            incomingPair[q++] = found;
+        });
+    }
+};
+
+//- Copy each new pair's history from the old list (before re-sorting; previous[i] is the old
+//- index of new grain i). A pair owned by the other grain before has its history negated.
+struct TransferHistory
+{
+    const int* start;
+    const int* partner;
+    double* history;
+    long count;
+    const int* previous;
+    int previousGrains;
+    const int* oldStart;
+    const int* oldPartner;
+    const double* oldHistory;
+    long oldCount;
+
+    DEM_HD void operator()(int i) const
+    {
+        const int oi = previous[i];
+        for (int p = start[i]; p < start[i + 1]; ++p)
+        {
+            const int oj = previous[partner[p]];
+            long found = -1;
+            double sign = 1.0;
+            if (oi < previousGrains && oj < previousGrains)
+            {
+                found = find(oi, oj);
+                if (found < 0)
+                {
+                    found = find(oj, oi);
+                    sign = -1.0;
+                }
+            }
+            for (int c = 0; c < 3 * kHistoryVectors; ++c)
+                history[p + c * count] = found < 0 ? 0.0 : sign * oldHistory[found + c * oldCount];
+        }
+    }
+
+    DEM_HD long find(int owner, int other) const
+    {
+        for (int p = oldStart[owner]; p < oldStart[owner + 1]; ++p)
+            if (oldPartner[p] == other)
+                return p;
+        return -1;
+    }
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem
