@@ -3,7 +3,7 @@ and the valid choices (DEVELOPERS.md: bad input gets a clear error)."""
 
 import pytest
 
-from foamcase import Case
+from darcydem.case import Case
 
 PROPS = "constant/darcyProperties"
 

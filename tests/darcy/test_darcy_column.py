@@ -7,7 +7,7 @@ Every test runs blockMesh and darcyDemFoam on a copy of tests/cases/darcyColumn
 import numpy as np
 import pytest
 
-from foamcase import Case
+from darcydem.case import Case
 from darcydem.analytic import drained_column_cell_mean, periodic_top, undrained_pressure_change
 
 H = 0.1

@@ -4,7 +4,7 @@ writes them: k = kc phi^3/(1 - phi)^2 with the case's porosity clamp and cap."""
 import numpy as np
 import pytest
 
-from foamcase import Case
+from darcydem.case import Case
 
 
 def written_k(name, porosity, model):

@@ -8,10 +8,13 @@
 #include <stdexcept>
 #include <string>
 
+//- Symbols of the public API; everything else in libdem.so is hidden (faster calls, no clashes).
+#define DEM_API __attribute__((visibility("default")))
+
 namespace dem
 {
 
-class Error : public std::runtime_error
+class DEM_API Error : public std::runtime_error
 {
 public:
     explicit Error(const std::string& message) : std::runtime_error("dem: " + message) {}

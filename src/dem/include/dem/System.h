@@ -25,9 +25,9 @@ namespace dem
 {
 
 //- Number of CUDA devices that answer (0 when built without CUDA or without a driver).
-int cudaDeviceCount();
+DEM_API int cudaDeviceCount();
 
-class System
+class DEM_API System
 {
 public:
     explicit System(const Parameters& parameters);

@@ -52,7 +52,10 @@ struct CudaExecution
     using Vector = thrust::cuda::vector<T>;
 
     static auto policy() { return thrust::cuda::par; }
+    //- Per-pair vectors stored pair by pair (see PairView).
+    static constexpr bool kPairMajor = false;
     static const char* name() { return "cuda"; }
+    static int threads() { return 1; }
     static constexpr int kBlock = 128;
 
     template <class F>

@@ -5,14 +5,15 @@
 #pragma once
 
 #if defined(__CUDACC__)
-#define DEM_HD __host__ __device__
+#define DEM_HD __host__ __device__ __forceinline__
 #define DEM_KERNEL_NS cudaKernels
 #else
-#define DEM_HD
+#define DEM_HD __attribute__((always_inline))
 #define DEM_KERNEL_NS cpuKernels
 #endif
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross()
 
 namespace dem
 {
@@ -22,7 +23,7 @@ namespace detail
 using Eigen::Vector3d;
 
 //- Add into memory that several threads may hit at once (deposit on CUDA).
-DEM_HD inline void atomicAddDouble(double* address, double value)
+DEM_HD void atomicAddDouble(double* address, double value)
 {
 #if defined(__CUDA_ARCH__)
     atomicAdd(address, value);

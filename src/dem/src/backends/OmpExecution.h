@@ -23,7 +23,10 @@ struct OmpExecution
     using Vector = thrust::omp::vector<T>;
 
     static auto policy() { return thrust::omp::par; }
+    //- Per-pair vectors stored pair by pair (see PairView).
+    static constexpr bool kPairMajor = true;
     static const char* name() { return "cpu"; }
+    static int threads() { return omp_get_max_threads(); }
 
     template <class F>
     static void forEach(int n, const F& f)

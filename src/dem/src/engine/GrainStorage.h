@@ -100,6 +100,13 @@ public:
         g.wallHistory = real(fWallHistory);
         g.wallForce = real(fWallForce);
         g.flag = integer(fFlag);
+        if (packedPositionRadius_.size() != 4 * std::size_t(n_))
+        {
+            packedPositionRadius_.resize(4 * std::size_t(n_));
+            packedVelocities_.resize(8 * std::size_t(n_));
+        }
+        g.packedPositionRadius = thrust::raw_pointer_cast(packedPositionRadius_.data());
+        g.packedVelocities = thrust::raw_pointer_cast(packedVelocities_.data());
         return g;
     }
 
@@ -177,6 +184,7 @@ private:
     std::array<Vec<double>, kRealFieldCount> reals_;
     std::array<Vec<int>, kIntFieldCount> ints_;
     Vec<double> scratchReal_;
+    Vec<double> packedPositionRadius_, packedVelocities_; // derived, see GrainView::pack
     Vec<int> scratchInt_;
 };
 

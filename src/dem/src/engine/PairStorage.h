@@ -17,7 +17,7 @@ struct PairStorage
     template <class T>
     using Vec = typename Exec::template Vector<T>;
 
-    Vec<int> start{1, 0}, partner, incomingStart{1, 0}, incomingPair;
+    Vec<int> start = Vec<int>(1, 0), partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
 
     long count() const { return long(partner.size()); }
@@ -26,6 +26,9 @@ struct PairStorage
     {
         PairView v;
         v.count = count();
+        v.componentStride = Exec::kPairMajor ? 1 : v.count;
+        v.historyPairStride = Exec::kPairMajor ? 3 * kHistoryVectors : 1;
+        v.reactionPairStride = Exec::kPairMajor ? 6 : 1;
         v.start = thrust::raw_pointer_cast(start.data());
         v.partner = thrust::raw_pointer_cast(partner.data());
         v.history = thrust::raw_pointer_cast(history.data());

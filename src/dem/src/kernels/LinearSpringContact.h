@@ -44,13 +44,19 @@ struct LinearSpringContact
 
         // Rotate the stored displacement into the current tangent plane, keeping its length.
         Vector3d xi = tangentialDisplacement;
-        const double lengthBefore2 = xi.squaredNorm();
-        if (lengthBefore2 > 0.0)
+        const double normalPart = xi.dot(n);
+        if (normalPart != 0.0)
         {
-            xi -= xi.dot(n) * n;
-            const double lengthAfter2 = xi.squaredNorm();
+            const double lengthBefore2 = xi.squaredNorm();
+            xi -= normalPart * n;
+            const double lengthAfter2 = lengthBefore2 - normalPart * normalPart;
             if (lengthAfter2 > 0.0)
-                xi *= std::sqrt(lengthBefore2 / lengthAfter2);
+            {
+                // Restore the length: sqrt(1 + e) with e = normalPart^2 / lengthAfter2, which
+                // is ~(rotation per step)^2; the series is exact to round-off below 1e-4.
+                const double e = normalPart * normalPart / lengthAfter2;
+                xi *= e < 1e-4 ? 1.0 + e * (0.5 - 0.125 * e) : std::sqrt(1.0 + e);
+            }
         }
         xi += tangentialVelocity * timeStep;
 
@@ -76,7 +82,7 @@ struct ContactLoads
 
 //- Geometry and kinematics of two touching spheres (or sphere and wall: radiusJ = 0,
 //- omegaJ = 0) and the law's loads. Lever arms reach the middle of the overlap.
-DEM_HD inline ContactLoads evaluateContact(const LinearSpringContact& law, const Vector3d& n,
+DEM_HD ContactLoads evaluateContact(const LinearSpringContact& law, const Vector3d& n,
                                            double overlap, double radiusI, double radiusJ,
                                            const Vector3d& velocityI, const Vector3d& velocityJ,
                                            const Vector3d& omegaI, const Vector3d& omegaJ,

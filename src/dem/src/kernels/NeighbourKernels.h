@@ -188,23 +188,17 @@ struct FillIncomingPairs
 //- index of new grain i). A pair owned by the other grain before has its history negated.
 struct TransferHistory
 {
-    const int* start;
-    const int* partner;
-    double* history;
-    long count;
+    PairView pairs;    //!< the new list
+    PairView oldPairs; //!< the previous list
     const int* previous;
     int previousGrains;
-    const int* oldStart;
-    const int* oldPartner;
-    const double* oldHistory;
-    long oldCount;
 
     DEM_HD void operator()(int i) const
     {
         const int oi = previous[i];
-        for (int p = start[i]; p < start[i + 1]; ++p)
+        for (int p = pairs.start[i]; p < pairs.start[i + 1]; ++p)
         {
-            const int oj = previous[partner[p]];
+            const int oj = previous[pairs.partner[p]];
             long found = -1;
             double sign = 1.0;
             if (oi < previousGrains && oj < previousGrains)
@@ -216,15 +210,17 @@ struct TransferHistory
                     sign = -1.0;
                 }
             }
+            double* h = pairs.historyOf(p);
+            const double* oldH = found < 0 ? nullptr : oldPairs.historyOf(found);
             for (int c = 0; c < 3 * kHistoryVectors; ++c)
-                history[p + c * count] = found < 0 ? 0.0 : sign * oldHistory[found + c * oldCount];
+                h[c * pairs.componentStride] = oldH ? sign * oldH[c * oldPairs.componentStride] : 0.0;
         }
     }
 
     DEM_HD long find(int owner, int other) const
     {
-        for (int p = oldStart[owner]; p < oldStart[owner + 1]; ++p)
-            if (oldPartner[p] == other)
+        for (int p = oldPairs.start[owner]; p < oldPairs.start[owner + 1]; ++p)
+            if (oldPairs.partner[p] == other)
                 return p;
         return -1;
     }

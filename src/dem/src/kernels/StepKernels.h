@@ -22,7 +22,7 @@ inline namespace DEM_KERNEL_NS
 constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3;
 
 //- Half kick of grain i with its current force and torque, respecting its flag.
-DEM_HD inline void halfKick(const GrainView& g, int i, double halfDt)
+DEM_HD void halfKick(const GrainView& g, int i, double halfDt)
 {
     const int flag = g.flag[i];
     if (flag == kFlagFixed)
@@ -48,7 +48,6 @@ DEM_HD inline void halfKick(const GrainView& g, int i, double halfDt)
 struct KickDrift
 {
     GrainView g;
-    BoxView box;
     double dt;
 
     DEM_HD double operator()(int i) const
@@ -56,8 +55,16 @@ struct KickDrift
         halfKick(g, i, 0.5 * dt);
         const Vector3d x = g.position(i) + dt * g.velocity(i);
         g.position.store(i, x);
+        g.pack(i);
         return (x - g.positionAtBuild(i)).squaredNorm();
     }
+};
+
+//- Refresh the packed copies (after adding, importing or re-sorting grains).
+struct PackGrains
+{
+    GrainView g;
+    DEM_HD void operator()(int i) const { g.pack(i); }
 };
 
 struct FluidView
@@ -81,8 +88,9 @@ struct ForceKernel
 
     DEM_HD void operator()(int i) const
     {
-        const Vector3d x = g.position(i), v = g.velocity(i), omega = g.angularVelocity(i);
-        const double r = g.radius[i];
+        const Vector3d x = g.packedPosition(i), v = g.packedVelocity(i),
+                       omega = g.packedAngularVelocity(i);
+        const double r = g.packedRadius(i);
         const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
         Vector3d force = gvec / g.inverseMass[i] - drag * v;
         Vector3d torque = Vector3d::Zero();
@@ -128,65 +136,72 @@ struct ForceKernel
     DEM_HD void addOwnedPairs(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
                               double r, Vector3d& force, Vector3d& torque) const
     {
-        const long stride = pairs.count;
+        const long cs = pairs.componentStride;
         for (int p = pairs.start[i]; p < pairs.start[i + 1]; ++p)
         {
             const int j = pairs.partner[p];
-            const Vector3d d = box.separation(x, g.position(j));
-            const double rj = g.radius[j];
+            const Vector3d d = box.separation(x, g.packedPosition(j));
+            const double rj = g.packedRadius(j);
             const double sumRadii = r + rj;
             const double distance2 = d.squaredNorm();
-            double* h = pairs.history + p;
-            double* reaction = pairs.reaction + p;
+            double* h = pairs.historyOf(p);
+            double* reaction = pairs.reactionOf(p);
             if (distance2 >= sumRadii * sumRadii)
             {
-                for (int c = 0; c < 3 * kHistoryVectors; ++c)
-                    h[c * stride] = 0.0;
+                if (h[0] != 0.0 || h[cs] != 0.0 || h[2 * cs] != 0.0)
+                    for (int c = 0; c < 3 * kHistoryVectors; ++c)
+                        h[c * cs] = 0.0;
                 for (int c = 0; c < 6; ++c)
-                    reaction[c * stride] = 0.0;
+                    reaction[c * cs] = 0.0;
                 continue;
             }
-            const double distance = std::sqrt(distance2);
-            Vector3d history(h[0], h[stride], h[2 * stride]);
-            const ContactLoads loads =
-                evaluateContact(grainLaw, d / distance, sumRadii - distance, r, rj, v,
-                                g.velocity(j), omega, g.angularVelocity(j), history);
+            const double inverseDistance = 1.0 / std::sqrt(distance2);
+            Vector3d history(h[0], h[cs], h[2 * cs]);
+            const ContactLoads loads = evaluateContact(
+                grainLaw, d * inverseDistance, sumRadii - distance2 * inverseDistance, r, rj, v,
+                g.packedVelocity(j), omega, g.packedAngularVelocity(j), history);
             h[0] = history.x();
-            h[stride] = history.y();
-            h[2 * stride] = history.z();
+            h[cs] = history.y();
+            h[2 * cs] = history.z();
             force += loads.forceOnI;
             torque += loads.torqueOnI;
             for (int c = 0; c < 3; ++c)
             {
-                reaction[c * stride] = -loads.forceOnI[c];
-                reaction[(3 + c) * stride] = loads.torqueOnJ[c];
+                reaction[c * cs] = -loads.forceOnI[c];
+                reaction[(3 + c) * cs] = loads.torqueOnJ[c];
             }
         }
     }
 };
 
+//- Completes the step (gather, half kick). With driftNext it also runs the next step's
+//- KickDrift in the same pass over the grains and returns its squared displacement.
 struct GatherKick
 {
     GrainView g;
     PairView pairs;
     double dt;
+    bool driftNext;
 
-    DEM_HD void operator()(int j) const
+    DEM_HD double operator()(int j) const
     {
         Vector3d force = g.force(j), torque = g.torque(j);
-        const long stride = pairs.count;
+        const long cs = pairs.componentStride;
         for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
         {
             const int p = pairs.incomingPair[q];
             if (p < 0)
                 continue; // cannot happen: the neighbour test is symmetric
-            const double* reaction = pairs.reaction + p;
-            force += Vector3d(reaction[0], reaction[stride], reaction[2 * stride]);
-            torque += Vector3d(reaction[3 * stride], reaction[4 * stride], reaction[5 * stride]);
+            const double* reaction = pairs.reactionOf(p);
+            force += Vector3d(reaction[0], reaction[cs], reaction[2 * cs]);
+            torque += Vector3d(reaction[3 * cs], reaction[4 * cs], reaction[5 * cs]);
         }
         g.force.store(j, force);
         g.torque.store(j, torque);
         halfKick(g, j, 0.5 * dt);
+        if (!driftNext)
+            return 0.0;
+        return KickDrift{g, dt}(j);
     }
 };
 

@@ -48,7 +48,7 @@ struct TrilinearStencil
     double weight[8];
 };
 
-DEM_HD inline TrilinearStencil trilinearStencil(const GridView& grid, const Vector3d& x)
+DEM_HD TrilinearStencil trilinearStencil(const GridView& grid, const Vector3d& x)
 {
     int index[3][2];
     double w[3][2];
@@ -73,7 +73,7 @@ DEM_HD inline TrilinearStencil trilinearStencil(const GridView& grid, const Vect
 }
 
 //- Interpolate a 3-per-cell interleaved field at x with the deposit's weights.
-DEM_HD inline Vector3d interpolateVector(const GridView& grid, const double* field, const Vector3d& x)
+DEM_HD Vector3d interpolateVector(const GridView& grid, const double* field, const Vector3d& x)
 {
     const TrilinearStencil s = trilinearStencil(grid, x);
     Vector3d value = Vector3d::Zero();

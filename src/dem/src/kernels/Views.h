@@ -47,18 +47,58 @@ struct GrainView
     double* wallHistory = nullptr; //!< 3 * kMaxWalls components
     double* wallForce = nullptr;   //!< kMaxWalls components: z-force of grain on wall
     int* flag = nullptr;
+    //- Packed copies read per neighbour (one or two cache lines instead of ten), refreshed
+    //- by every kick-drift: (x, y, z, r) and (vx, vy, vz, 0, wx, wy, wz, 0) per grain.
+    double* packedPositionRadius = nullptr;
+    double* packedVelocities = nullptr;
+
+    DEM_HD void pack(int i) const
+    {
+        double* xr = packedPositionRadius + 4L * i;
+        double* vw = packedVelocities + 8L * i;
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = position.data[i + c * position.stride];
+            vw[c] = velocity.data[i + c * velocity.stride];
+            vw[4 + c] = angularVelocity.data[i + c * angularVelocity.stride];
+        }
+        xr[3] = radius[i];
+        vw[3] = vw[7] = 0.0;
+    }
+    DEM_HD Vector3d packedPosition(int i) const
+    {
+        const double* xr = packedPositionRadius + 4L * i;
+        return Vector3d(xr[0], xr[1], xr[2]);
+    }
+    DEM_HD double packedRadius(int i) const { return packedPositionRadius[4L * i + 3]; }
+    DEM_HD Vector3d packedVelocity(int i) const
+    {
+        const double* vw = packedVelocities + 8L * i;
+        return Vector3d(vw[0], vw[1], vw[2]);
+    }
+    DEM_HD Vector3d packedAngularVelocity(int i) const
+    {
+        const double* vw = packedVelocities + 8L * i + 4;
+        return Vector3d(vw[0], vw[1], vw[2]);
+    }
 };
 
 //- Half neighbour list (pair p owned by the lower index) and its per-pair state.
 struct PairView
 {
     long count = 0;
+    //- Layout of per-pair vectors: component c of pair p at p * pairStride + c * componentStride
+    //- (pair-major on the CPU for cache lines, component-major on the GPU for coalescing).
+    long historyPairStride = 0, reactionPairStride = 0, componentStride = 0;
     const int* start = nullptr;   //!< N + 1: pairs of owner i are [start[i], start[i+1])
     const int* partner = nullptr; //!< the other grain, > owner
     double* history = nullptr;    //!< 3 * kHistoryVectors components, stride count
     double* reaction = nullptr;   //!< 6 components: force and torque on the partner
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
+
+    DEM_HD double* historyOf(long p) const { return history + p * historyPairStride; }
+    DEM_HD double* reactionOf(long p) const { return reaction + p * reactionPairStride; }
 };
 
 //- Periodic box in x and y; z is never periodic.
@@ -94,6 +134,26 @@ struct WallsView
     double normalZ[kMaxWalls] = {};
     double velocity[kMaxWalls] = {};
     bool frictional[kMaxWalls] = {};
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+struct MaxOp
+{
+    DEM_HD double operator()(double a, double b) const { return a > b ? a : b; }
+};
+struct MinOp
+{
+    DEM_HD double operator()(double a, double b) const { return a < b ? a : b; }
 };
 
 } // namespace DEM_KERNEL_NS

@@ -1,8 +1,9 @@
-"""Run real OpenFOAM case directories from tests and read their output.
+"""Run real OpenFOAM case directories and read their output.
 
-A Case is a copy of a template case under tests/run/<name>; entries are
-changed with Debian's foamDictionary, applications are run with their log
-kept in the case, and fields / probes are read back as numpy arrays.
+A Case is a copy of a template case; entries are changed with Debian's
+foamDictionary, applications are run with their log kept in the case, and
+fields / probes are read back as numpy arrays. Used by the tests (templates
+in tests/cases, copies in tests/run) and by the tutorials' study scripts.
 """
 
 import os
@@ -13,7 +14,8 @@ import subprocess
 from darcydem.foamfiles import read_internal_field, read_probes, time_dirs
 
 PROJECT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-RUN_ROOT = os.path.join(PROJECT, "tests", "run")
+TEST_TEMPLATES = os.path.join(PROJECT, "tests", "cases")
+TEST_RUNS = os.path.join(PROJECT, "tests", "run")
 
 
 class RunError(RuntimeError):
@@ -21,11 +23,19 @@ class RunError(RuntimeError):
 
 
 class Case:
-    def __init__(self, template, name):
-        src = os.path.join(PROJECT, "tests", "cases", template)
-        self.path = os.path.join(RUN_ROOT, name)
+    def __init__(self, template, name, template_root=TEST_TEMPLATES, run_root=TEST_RUNS):
+        """Copy template_root/template to run_root/name (replacing it)."""
+        self.path = os.path.join(run_root, name)
         shutil.rmtree(self.path, ignore_errors=True)
-        shutil.copytree(src, self.path)
+        shutil.copytree(os.path.join(template_root, template), self.path,
+                        ignore=shutil.ignore_patterns("stages", "*.png", "log.*"))
+
+    @classmethod
+    def existing(cls, path):
+        """A Case for a directory that is already there."""
+        case = cls.__new__(cls)
+        case.path = os.path.abspath(path)
+        return case
 
     def file(self, rel):
         return os.path.join(self.path, rel)

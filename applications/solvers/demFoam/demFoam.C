@@ -1,0 +1,94 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+-------------------------------------------------------------------------------
+Application
+    demFoam
+
+Description
+    Dry grains: the DEM part of darcyDemFoam alone, on the same case format
+    (constant/demProperties, <startTime>/grains or demState, a uniform
+    Cartesian mesh that sets the periodic box and the output grid). No pore
+    fluid: no darcyProperties, no p. Used for packing preparation, dry shear
+    and snow runs. Writes porosity and Us (the grains deposited on the mesh)
+    and the grains (demState, grains.vtp, grains.pvd) at write times.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "demCloud.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("DEM grains without pore fluid (dry runs)");
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    demCloud cloud(mesh);
+
+    volScalarField porosity
+    (
+        IOobject
+        (
+            "porosity",
+            runTime.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("porosity", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    );
+    volScalarField predictedPorosity("predictedPorosity", porosity);
+    volVectorField Us
+    (
+        IOobject
+        (
+            "Us",
+            runTime.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector("Us", dimVelocity, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    );
+
+    cloud.deposit(runTime.deltaTValue(), porosity, predictedPorosity, Us);
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        cloud.evolve(runTime.deltaTValue());
+
+        if (runTime.writeTime())
+        {
+            cloud.deposit(runTime.deltaTValue(), porosity, predictedPorosity, Us);
+            Info<< "Time = " << runTime.timeName() << ", "
+                << cloud.system().contactCount() << " contacts, "
+                << cloud.particleStepsPerSecond() << " particle-steps/s"
+                << nl << endl;
+        }
+
+        runTime.write();
+    }
+
+    runTime.printExecutionTime(Info);
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

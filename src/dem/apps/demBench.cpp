@@ -1,0 +1,133 @@
+// demBench.cpp
+// The standard DEM benchmark of ../shared/bench/README.md: a settled dense packing on a wall,
+// 1000 relaxation steps with a global drag of 612 N s/m, then exactly 2000 timed steps without
+// damping. The last line is machine-readable:
+//   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>
+#include "PackingFile.h"
+#include "dem/System.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+
+void usage()
+{
+    std::cerr << "usage: demBench --packing FILE [--relax-steps 1000] [--steps 2000] "
+                 "[--threads T] [--backend auto|cpu|cuda] [--skin 0.0005]\n";
+}
+
+dem::Backend parseBackend(const std::string& name)
+{
+    if (name == "auto")
+        return dem::Backend::automatic;
+    if (name == "cpu")
+        return dem::Backend::cpu;
+    if (name == "cuda")
+        return dem::Backend::cuda;
+    throw dem::Error("unknown backend '" + name + "' (valid: auto cpu cuda)");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    std::string packingFile;
+    int relaxSteps = 1000, steps = 2000, threads = 0;
+    double skin = 0.0005, friction = 0.5;
+    dem::Backend backend = dem::Backend::automatic;
+    try
+    {
+        for (int a = 1; a < argc; ++a)
+        {
+            const std::string arg = argv[a];
+            auto value = [&]() -> std::string {
+                if (a + 1 >= argc)
+                    throw dem::Error("option " + arg + " needs a value");
+                return argv[++a];
+            };
+            if (arg == "--packing")
+                packingFile = value();
+            else if (arg == "--relax-steps")
+                relaxSteps = std::stoi(value());
+            else if (arg == "--steps")
+                steps = std::stoi(value());
+            else if (arg == "--threads")
+                threads = std::stoi(value());
+            else if (arg == "--backend")
+                backend = parseBackend(value());
+            else if (arg == "--skin")
+                skin = std::stod(value());
+            else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
+                friction = std::stod(value());
+            else if (arg == "-h" || arg == "--help")
+            {
+                usage();
+                return 0;
+            }
+            else
+                throw dem::Error("unknown option '" + arg + "'");
+        }
+        if (packingFile.empty())
+        {
+            usage();
+            return 2;
+        }
+
+        const double density = 2600.0;
+        const dem::Packing packing = dem::readPacking(packingFile, density);
+        dem::Parameters p;
+        p.grainGrain = {1.16e9, 1.16e9, 0.0, 0.0, friction};
+        p.grainWall = p.grainGrain;
+        p.defaultDensity = density;
+        p.gravity = {0.0, 0.0, -9.81};
+        p.boxLower = {0.0, 0.0};
+        p.boxUpper = {packing.length, packing.length};
+        p.periodic = {true, true};
+        p.timeStep = 2.14e-7;
+        p.neighbourSkin = skin;
+        p.backend = backend;
+        p.threads = threads;
+
+        dem::System system(p);
+        system.addGrains(packing.grains);
+        dem::WallSpec bottom;
+        bottom.side = dem::WallSpec::Side::lower;
+        bottom.position = 0.0;
+        system.addWall(bottom);
+        const long n = long(system.grainCount());
+        std::printf("demBench: %s, N = %ld, L = %g m, dt = %g s, skin = %g m, backend %s, "
+                    "%d thread(s)\n",
+                    packingFile.c_str(), n, packing.length, p.timeStep, skin,
+                    system.backendName().c_str(), system.threadCount());
+
+        system.setViscousDrag(612.0);
+        system.step(relaxSteps);
+        system.setViscousDrag(0.0);
+        const std::size_t rebuildsBefore = system.neighbourRebuildCount();
+        const auto start = std::chrono::steady_clock::now();
+        system.step(steps);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double rate = double(n) * steps / seconds;
+        const double contactsPerGrain = 2.0 * double(system.contactCount()) / double(n);
+        std::printf("relaxation %d steps, timed %d steps in %.4f s, %zu neighbour rebuild(s) "
+                    "while timed, %.3f list pairs per grain\n",
+                    relaxSteps, steps, seconds, system.neighbourRebuildCount() - rebuildsBefore,
+                    double(system.pairCount()) / double(n));
+        std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
+                    "contacts_per_grain=%.4f\n",
+                    rate, n, system.threadCount(), system.backendName().c_str(),
+                    contactsPerGrain);
+        return 0;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "demBench: " << e.what() << "\n";
+        return 1;
+    }
+}

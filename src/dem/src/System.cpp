@@ -1,0 +1,204 @@
+// System.cpp
+// dem::System: parameter checks, run-time backend selection and the critical-time-step guard;
+// everything else is forwarded to the engine of the chosen backend.
+#include "dem/System.h"
+
+#include "engine/Engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace dem
+{
+
+struct System::Impl
+{
+    Parameters parameters;
+    std::unique_ptr<detail::Engine> engine;
+};
+
+namespace
+{
+
+void require(bool ok, const std::string& name, double value, const std::string& limit)
+{
+    if (!ok)
+    {
+        std::ostringstream msg;
+        msg << "parameter " << name << " = " << value << " is invalid: it must be " << limit;
+        throw Error(msg.str());
+    }
+}
+
+void checkMaterial(const ContactMaterial& m, const std::string& prefix)
+{
+    require(m.normalStiffness > 0, prefix + ".normalStiffness", m.normalStiffness, "> 0");
+    require(m.tangentialStiffness >= 0, prefix + ".tangentialStiffness", m.tangentialStiffness,
+            ">= 0");
+    require(m.normalDamping >= 0, prefix + ".normalDamping", m.normalDamping, ">= 0");
+    require(m.tangentialDamping >= 0, prefix + ".tangentialDamping", m.tangentialDamping, ">= 0");
+    require(m.friction >= 0, prefix + ".friction", m.friction, ">= 0");
+}
+
+void checkParameters(const Parameters& p)
+{
+    checkMaterial(p.grainGrain, "grainGrain");
+    checkMaterial(p.grainWall, "grainWall");
+    require(p.timeStep > 0, "timeStep", p.timeStep, "> 0");
+    require(p.neighbourSkin >= 0, "neighbourSkin", p.neighbourSkin, ">= 0");
+    require(p.maxTimeStepFraction > 0, "maxTimeStepFraction", p.maxTimeStepFraction, "> 0");
+    require(p.defaultDensity > 0, "defaultDensity", p.defaultDensity, "> 0");
+    require(p.viscousDrag >= 0, "viscousDrag", p.viscousDrag, ">= 0");
+    require(p.threads >= 0, "threads", p.threads, ">= 0 (0: OpenMP default)");
+    require(p.maxPairsPerGrain >= 0, "maxPairsPerGrain", p.maxPairsPerGrain, ">= 0 (0: grow)");
+    for (int d = 0; d < 2; ++d)
+        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
+                p.boxUpper[d], "> boxLower");
+}
+
+void checkWall(const WallSpec& w)
+{
+    if (w.mode == WallSpec::Mode::stress)
+        require(w.mass > 0, "wall.mass", w.mass, "> 0 for a stress-controlled wall");
+}
+
+double stiffest(const Parameters& p)
+{
+    return std::max({p.grainGrain.normalStiffness, p.grainGrain.tangentialStiffness,
+                     p.grainWall.normalStiffness, p.grainWall.tangentialStiffness});
+}
+
+} // namespace
+
+System::System(const Parameters& parameters) : impl_(std::make_unique<Impl>())
+{
+    checkParameters(parameters);
+    impl_->parameters = parameters;
+    switch (parameters.backend)
+    {
+    case Backend::cpu:
+        impl_->engine = detail::makeCpuEngine(parameters);
+        break;
+    case Backend::cuda:
+        impl_->engine = detail::makeCudaEngine(parameters);
+        break;
+    case Backend::automatic:
+        impl_->engine = cudaDeviceCount() > 0 ? detail::makeCudaEngine(parameters)
+                                              : detail::makeCpuEngine(parameters);
+        break;
+    }
+}
+
+System::~System() = default;
+System::System(System&&) noexcept = default;
+System& System::operator=(System&&) noexcept = default;
+
+int System::addGrains(const std::vector<GrainInit>& grains)
+{
+    const int first = int(impl_->engine->grainCount());
+    impl_->engine->addGrains(grains);
+    return first;
+}
+
+int System::addWall(const WallSpec& wall)
+{
+    checkWall(wall);
+    return impl_->engine->addWall(wall);
+}
+
+void System::setWallMotion(int wall, const WallSpec& spec)
+{
+    checkWall(spec);
+    impl_->engine->setWallMotion(wall, spec);
+}
+
+void System::setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx, double vy)
+{
+    impl_->engine->setGrainFlags(indices, flag, vx, vy);
+}
+
+void System::setViscousDrag(double drag)
+{
+    require(drag >= 0, "viscousDrag", drag, ">= 0");
+    impl_->parameters.viscousDrag = drag;
+    impl_->engine->setViscousDrag(drag);
+}
+
+void System::setTimeStep(double dt)
+{
+    require(dt > 0, "timeStep", dt, "> 0");
+    impl_->parameters.timeStep = dt;
+    impl_->engine->setTimeStep(dt);
+}
+
+double System::criticalTimeStep() const
+{
+    if (impl_->engine->grainCount() == 0)
+        return 0.0;
+    return std::sqrt(impl_->engine->minimumMass() / stiffest(impl_->parameters));
+}
+
+void System::step(int nSteps)
+{
+    require(nSteps >= 0, "nSteps", nSteps, ">= 0");
+    if (impl_->engine->grainCount() > 0)
+    {
+        const Parameters& p = impl_->parameters;
+        const double critical = criticalTimeStep();
+        if (p.timeStep > p.maxTimeStepFraction * critical)
+        {
+            std::ostringstream msg;
+            msg << "timeStep = " << p.timeStep << " s exceeds the limit "
+                << p.maxTimeStepFraction * critical << " s = maxTimeStepFraction ("
+                << p.maxTimeStepFraction << ") x critical time step sqrt(m_min / k_max) = "
+                << critical << " s (m_min = " << impl_->engine->minimumMass()
+                << " kg, k_max = " << stiffest(p) << " N/m); reduce timeStep";
+            throw Error(msg.str());
+        }
+    }
+    impl_->engine->step(nSteps);
+}
+
+std::size_t System::grainCount() const { return impl_->engine->grainCount(); }
+GrainData System::grains() const { return impl_->engine->grains(); }
+int System::wallCount() const { return impl_->engine->wallCount(); }
+WallData System::wall(int wall) const { return impl_->engine->wall(wall); }
+double System::prescribedGrainForceX() const { return impl_->engine->prescribedGrainForceX(); }
+std::size_t System::contactCount() const { return impl_->engine->contactCount(); }
+std::size_t System::pairCount() const { return impl_->engine->pairCount(); }
+std::size_t System::neighbourRebuildCount() const { return impl_->engine->rebuildCount(); }
+double System::time() const { return impl_->engine->time(); }
+long long System::stepCount() const { return impl_->engine->stepCount(); }
+double System::timeStep() const { return impl_->parameters.timeStep; }
+std::string System::backendName() const { return impl_->engine->name(); }
+int System::threadCount() const { return impl_->engine->threads(); }
+const Parameters& System::parameters() const { return impl_->parameters; }
+
+void System::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
+                     double* predictedPorosity, double* meanVelocity, double* solidVolume) const
+{
+    impl_->engine->deposit(grid, dtFluid, porosity, predictedPorosity, meanVelocity, solidVolume);
+}
+
+void System::setFluid(const UniformGrid& grid, const double* gradP, double fluidDensity)
+{
+    impl_->engine->setFluid(grid, gradP, fluidDensity);
+}
+
+void System::clearFluid() { impl_->engine->clearFluid(); }
+
+SystemState System::exportState() const { return impl_->engine->exportState(); }
+
+void System::importState(const SystemState& state)
+{
+    impl_->engine->importState(state);
+    const auto clock = state.reals.find("clock");
+    if (clock != state.reals.end() && clock->second.size() == 3)
+    {
+        impl_->parameters.timeStep = clock->second[1];
+        impl_->parameters.viscousDrag = clock->second[2];
+    }
+}
+
+} // namespace dem

@@ -1,0 +1,259 @@
+// EngineImpl.h
+// The engine, written once over an execution policy (OmpExecution with g++, CudaExecution
+// with nvcc): owns grains, pairs and walls, and runs the velocity-Verlet step
+//     kick-drift -> (rebuild if a grain moved more than skin/2) -> forces -> gather-kick
+// Walls are few and live on the host. Read-back, coupling and restart are in EngineIo.h.
+#pragma once
+
+#include "dem/Error.h"
+#include "engine/Engine.h"
+#include "engine/GrainStorage.h"
+#include "engine/PairStorage.h"
+#include "kernels/CouplingKernels.h"
+#include "kernels/DiagnosticKernels.h"
+#include "kernels/NeighbourKernels.h"
+#include "kernels/StepKernels.h"
+
+#include <thrust/binary_search.h>
+#include <thrust/extrema.h>
+#include <thrust/iterator/counting_iterator.h>
+#include <thrust/scan.h>
+#include <thrust/sequence.h>
+#include <thrust/sort.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace dem
+{
+namespace detail
+{
+
+struct WallState
+{
+    WallSpec spec;
+    double position = 0, velocity = 0, acceleration = 0, grainForce = 0;
+};
+
+template <class Exec>
+class EngineImpl final : public Engine
+{
+public:
+    template <class T>
+    using Vec = typename Exec::template Vector<T>;
+
+    explicit EngineImpl(const Parameters& p) : params_(p) {}
+
+    // ---- set-up ---------------------------------------------------------------------------
+    void addGrains(const std::vector<GrainInit>& grains) override;
+    int addWall(const WallSpec& wall) override
+    {
+        if (walls_.size() >= std::size_t(kMaxWalls))
+            throw Error("addWall: at most " + std::to_string(kMaxWalls) + " walls are supported");
+        WallState w;
+        w.spec = wall;
+        w.position = wall.position;
+        w.velocity = wall.mode == WallSpec::Mode::fixed ? 0.0 : wall.velocity;
+        walls_.push_back(w);
+        return int(walls_.size()) - 1;
+    }
+    void setWallMotion(int wall, const WallSpec& spec) override
+    {
+        WallState& w = walls_.at(checkWall(wall));
+        w.spec = spec;
+        w.spec.position = w.position;
+        w.velocity = spec.mode == WallSpec::Mode::fixed ? 0.0 : spec.velocity;
+        w.acceleration = 0.0;
+    }
+    void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
+                       double vy) override;
+    void setViscousDrag(double drag) override { params_.viscousDrag = drag; }
+    void setTimeStep(double dt) override { params_.timeStep = dt; }
+
+    // ---- stepping -------------------------------------------------------------------------
+    void step(int nSteps) override
+    {
+        const int n = grains_.size();
+        const double dt = params_.timeStep;
+        const double halfSkin = 0.5 * params_.neighbourSkin;
+        if (n > 0 && forcesStale_)
+            computeInitialForces();
+        if (nSteps <= 0)
+            return;
+        // Each pass over the grains ends one step and begins the next (see GatherKick).
+        double moved2 = Exec::maxOf(n, KickDrift{grains_.view(), dt});
+        wallsKickDrift(dt);
+        for (int s = 0; s < nSteps; ++s)
+        {
+            if (needRebuild_ || moved2 > halfSkin * halfSkin)
+                rebuild();
+            Exec::forEach(n, forceKernel(dt));
+            wallsFinishStep(dt);
+            const bool last = s + 1 == nSteps;
+            moved2 = Exec::maxOf(n, GatherKick{grains_.view(), pairs_.view(), dt, !last});
+            if (!last)
+                wallsKickDrift(dt);
+            time_ += dt;
+            ++steps_;
+        }
+    }
+
+    // ---- read-back (EngineIo.h) -------------------------------------------------------------
+    std::size_t grainCount() const override { return std::size_t(grains_.size()); }
+    double minimumMass() const override;
+    GrainData grains() const override;
+    int wallCount() const override { return int(walls_.size()); }
+    WallData wall(int wall) const override;
+    double prescribedGrainForceX() const override
+    {
+        return Exec::sumOf(grains_.size(), PrescribedForceX{self().grains_.view()});
+    }
+    std::size_t contactCount() const override;
+    std::size_t pairCount() const override { return std::size_t(pairs_.count()); }
+    std::size_t rebuildCount() const override { return rebuilds_; }
+    double time() const override { return time_; }
+    long long stepCount() const override { return steps_; }
+    std::string name() const override { return Exec::name(); }
+    int threads() const override { return Exec::threads(); }
+
+    void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
+                 double* predictedPorosity, double* meanVelocity,
+                 double* solidVolume) const override;
+    void setFluid(const UniformGrid& grid, const double* gradP, double density) override;
+    void clearFluid() override { fluid_.active = false; }
+
+    SystemState exportState() const override;
+    void importState(const SystemState& state) override;
+
+private:
+    // Read-back kernels need non-const views of storage they do not modify.
+    EngineImpl& self() const { return const_cast<EngineImpl&>(*this); }
+
+    int checkWall(int wall) const
+    {
+        if (wall < 0 || wall >= int(walls_.size()))
+            throw Error("wall index " + std::to_string(wall) + " out of range [0, " +
+                        std::to_string(walls_.size()) + ")");
+        return wall;
+    }
+
+    BoxView boxView() const
+    {
+        BoxView b;
+        for (int d = 0; d < 2; ++d)
+        {
+            b.lower[d] = params_.boxLower[d];
+            b.length[d] = params_.boxUpper[d] - params_.boxLower[d];
+            b.periodic[d] = params_.periodic[d];
+        }
+        return b;
+    }
+
+    static LinearSpringContact law(const ContactMaterial& m, double dt, bool frictional = true)
+    {
+        return LinearSpringContact{m.normalStiffness,   m.tangentialStiffness,
+                                   m.normalDamping,     m.tangentialDamping,
+                                   frictional ? m.friction : 0.0, dt};
+    }
+
+    //- historyDt: time step of the tangential spring increment (0: evaluate without advancing).
+    ForceKernel forceKernel(double historyDt)
+    {
+        ForceKernel k{grains_.view(), pairs_.view(), boxView(), wallsView(),
+                      law(params_.grainGrain, historyDt),
+                      law(params_.grainWall, historyDt),
+                      law(params_.grainWall, historyDt, false),
+                      {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                      params_.viscousDrag,
+                      fluid_};
+        k.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
+        return k;
+    }
+
+    WallsView wallsView() const
+    {
+        WallsView v;
+        v.count = int(walls_.size());
+        for (int w = 0; w < v.count; ++w)
+        {
+            v.position[w] = walls_[w].position;
+            v.normalZ[w] = walls_[w].spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
+            v.velocity[w] = walls_[w].velocity;
+            v.frictional[w] = walls_[w].spec.frictional;
+        }
+        return v;
+    }
+
+    double boxArea() const
+    {
+        return (params_.boxUpper[0] - params_.boxLower[0]) *
+               (params_.boxUpper[1] - params_.boxLower[1]);
+    }
+
+    void wallsKickDrift(double dt)
+    {
+        for (WallState& w : walls_)
+        {
+            if (w.spec.mode == WallSpec::Mode::stress)
+                w.velocity += 0.5 * dt * w.acceleration;
+            if (w.spec.mode != WallSpec::Mode::fixed)
+                w.position += dt * w.velocity;
+        }
+    }
+
+    double wallGrainForce(int w) const
+    {
+        return Exec::sumOf(grains_.size(),
+                           ComponentOf{self().grains_.real(fWallForce) + long(w) * grains_.size()});
+    }
+
+    void wallsFinishStep(double dt)
+    {
+        for (std::size_t w = 0; w < walls_.size(); ++w)
+        {
+            WallState& wall = walls_[w];
+            if (wall.spec.mode != WallSpec::Mode::stress)
+                continue;
+            // The applied stress presses the wall onto the grains (down for an upper wall).
+            const double normalZ = wall.spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
+            wall.grainForce = wallGrainForce(int(w));
+            wall.acceleration =
+                (wall.grainForce + normalZ * wall.spec.normalStress * boxArea()) / wall.spec.mass;
+            wall.velocity += 0.5 * dt * wall.acceleration;
+        }
+    }
+
+    //- Forces of freshly added grains, so the first half kick is second-order too.
+    void computeInitialForces()
+    {
+        const int n = grains_.size();
+        rebuild();
+        Exec::forEach(n, PackGrains{grains_.view()});
+        Exec::forEach(n, forceKernel(0.0));
+        Exec::forEach(n, GatherKick{grains_.view(), pairs_.view(), 0.0, false});
+        forcesStale_ = false;
+    }
+
+    CellGridView cellGrid();
+    void rebuild();
+
+    Parameters params_;
+    GrainStorage<Exec> grains_;
+    PairStorage<Exec> pairs_, oldPairs_;
+    std::vector<WallState> walls_;
+    Vec<int> cellKey_, order_, cellStart_, counts_;
+    Vec<double> fluidGradP_;
+    FluidView fluid_;
+    bool needRebuild_ = true;
+    bool forcesStale_ = true;
+    int grainsAtLastBuild_ = 0;
+    std::size_t rebuilds_ = 0;
+    double time_ = 0.0;
+    long long steps_ = 0;
+};
+
+} // namespace detail
+} // namespace dem
+
+#include "engine/EngineIo.h"
+#include "engine/EngineNeighbours.h"

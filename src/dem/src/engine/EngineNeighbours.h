@@ -1,0 +1,144 @@
+// EngineNeighbours.h
+// Neighbour rebuild of EngineImpl: wrap into the periodic box, sort grains by cell (locality,
+// and the cell ranges the search walks), build the half list and its transpose, and carry
+// every contact's history over from the previous list.
+#pragma once
+
+#include <thrust/reduce.h>
+
+#include <limits>
+
+namespace dem
+{
+namespace detail
+{
+
+template <class Exec>
+CellGridView EngineImpl<Exec>::cellGrid()
+{
+    const int n = grains_.size();
+    const double* radius = grains_.real(fRadius);
+    const double rMax = thrust::reduce(Exec::policy(), radius, radius + n, 0.0, MaxOp());
+    const BoxView box = boxView();
+    double lower[3], upper[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        const double* x = grains_.real(fPosition) + long(d) * n;
+        lower[d] = thrust::reduce(Exec::policy(), x, x + n,
+                                  std::numeric_limits<double>::infinity(), MinOp());
+        upper[d] = thrust::reduce(Exec::policy(), x, x + n,
+                                  -std::numeric_limits<double>::infinity(), MaxOp());
+    }
+    double cellSize = 2.0 * rMax + params_.neighbourSkin;
+    for (int d = 0; d < 2; ++d)
+        if (box.periodic[d] && box.length[d] < 2.0 * cellSize)
+            throw Error("periodic box length " + std::to_string(box.length[d]) + " m in " +
+                        (d == 0 ? "x" : "y") + " is below 2 (2 r_max + neighbourSkin) = " +
+                        std::to_string(2.0 * cellSize) +
+                        " m; a grain would meet two images of another");
+    // Few, large cells when grains are spread thin (a gas): the search stays correct.
+    const double cellLimit = 4.0 * n + 64.0;
+    for (;;)
+    {
+        CellGridView cells;
+        double total = 1.0;
+        for (int d = 0; d < 3; ++d)
+        {
+            cells.periodic[d] = box.periodic[d];
+            if (box.periodic[d])
+            {
+                cells.n[d] = std::max(1, int(std::floor(box.length[d] / cellSize)));
+                cells.lower[d] = box.lower[d];
+                cells.inverseCellSize[d] = cells.n[d] / box.length[d];
+            }
+            else
+            {
+                cells.n[d] = int(std::floor((upper[d] - lower[d]) / cellSize)) + 1;
+                cells.lower[d] = lower[d];
+                cells.inverseCellSize[d] = 1.0 / cellSize;
+            }
+            total *= cells.n[d];
+        }
+        if (total <= cellLimit)
+            return cells;
+        cellSize *= 1.5;
+    }
+}
+
+template <class Exec>
+void EngineImpl<Exec>::rebuild()
+{
+    const int n = grains_.size();
+    const BoxView box = boxView();
+    Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.integer(fImage), box, n});
+
+    // Sort by cell: grains of a cell become contiguous and neighbours close in memory.
+    CellGridView cells = cellGrid();
+    const int cellCount = cells.n[0] * cells.n[1] * cells.n[2];
+    cellKey_.resize(n);
+    order_.resize(n);
+    Exec::forEach(n, CellKey{grains_.vec3(fPosition), cells, thrust::raw_pointer_cast(cellKey_.data())});
+    thrust::sequence(Exec::policy(), order_.begin(), order_.end());
+    thrust::stable_sort_by_key(Exec::policy(), cellKey_.begin(), cellKey_.end(), order_.begin());
+    grains_.permute(order_);
+    cellStart_.resize(cellCount + 1);
+    thrust::lower_bound(Exec::policy(), cellKey_.begin(), cellKey_.end(),
+                        thrust::counting_iterator<int>(0),
+                        thrust::counting_iterator<int>(cellCount + 1), cellStart_.begin());
+    cells.cellStart = thrust::raw_pointer_cast(cellStart_.data());
+
+    // Half list (owner < partner): count, scan, fill.
+    pairs_.swap(oldPairs_);
+    const NeighbourSearch search{grains_.vec3(fPosition), grains_.real(fRadius), box, cells,
+                                 params_.neighbourSkin};
+    counts_.resize(n + 1);
+    int* counts = thrust::raw_pointer_cast(counts_.data());
+    counts_[n] = 0;
+    Exec::forEach(n, CountNeighbours{search, true, counts});
+    pairs_.start.resize(n + 1);
+    thrust::exclusive_scan(Exec::policy(), counts_.begin(), counts_.end(), pairs_.start.begin());
+    const long pairCount = pairs_.start[n];
+    if (params_.maxPairsPerGrain > 0 && pairCount > long(params_.maxPairsPerGrain) * n)
+    {
+        std::ostringstream msg;
+        msg << "contact storage overflow: " << pairCount << " neighbour pairs for " << n
+            << " grains exceed maxPairsPerGrain = " << params_.maxPairsPerGrain
+            << " per grain (limit " << long(params_.maxPairsPerGrain) * n
+            << "); raise maxPairsPerGrain or set it to 0 to let the storage grow";
+        pairs_.swap(oldPairs_);
+        throw Error(msg.str());
+    }
+    pairs_.partner.resize(pairCount);
+    pairs_.history.resize(3 * kHistoryVectors * pairCount);
+    pairs_.reaction.resize(6 * pairCount);
+    Exec::forEach(n, FillOwnedPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
+                                    thrust::raw_pointer_cast(pairs_.partner.data())});
+
+    Exec::forEach(n, TransferHistory{pairs_.view(), oldPairs_.view(),
+                                     thrust::raw_pointer_cast(order_.data()), grainsAtLastBuild_});
+
+    // Transposed list: for each grain the pairs it is the partner of.
+    Exec::forEach(n, CountNeighbours{search, false, counts});
+    counts_[n] = 0;
+    pairs_.incomingStart.resize(n + 1);
+    thrust::exclusive_scan(Exec::policy(), counts_.begin(), counts_.end(),
+                           pairs_.incomingStart.begin());
+    if (long(pairs_.incomingStart[n]) != pairCount)
+        throw Error("internal error: neighbour lists disagree (" + std::to_string(pairCount) +
+                    " owned vs " + std::to_string(long(pairs_.incomingStart[n])) + " incoming)");
+    pairs_.incomingPair.resize(pairCount);
+    Exec::forEach(n, FillIncomingPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
+                                       thrust::raw_pointer_cast(pairs_.partner.data()),
+                                       thrust::raw_pointer_cast(pairs_.incomingStart.data()),
+                                       thrust::raw_pointer_cast(pairs_.incomingPair.data())});
+
+    const double* x = grains_.real(fPosition);
+    thrust::copy(Exec::policy(), x, x + 3L * n, grains_.real(fPositionAtBuild));
+    Exec::forEach(n, PackGrains{grains_.view()});
+    grainsAtLastBuild_ = n;
+    needRebuild_ = false;
+    ++rebuilds_;
+}
+
+} // namespace detail
+} // namespace dem

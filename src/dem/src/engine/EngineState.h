@@ -1,0 +1,152 @@
+// EngineState.h
+// EngineImpl: complete state as named host arrays (grains in internal order, the neighbour
+// list with contact history, walls, clock). Importing it restores the engine exactly, so the
+// continued run is bit-identical to the uninterrupted one.
+#pragma once
+
+namespace dem
+{
+namespace detail
+{
+
+namespace stateDetail
+{
+template <class Vec, class T>
+void toHost(const Vec& v, std::vector<T>& out)
+{
+    out.resize(v.size());
+    thrust::copy(v.begin(), v.end(), out.begin());
+}
+template <class Vec, class T>
+void fromHost(const std::vector<T>& in, Vec& v)
+{
+    v.resize(in.size());
+    thrust::copy(in.begin(), in.end(), v.begin());
+}
+template <class Map>
+const typename Map::mapped_type& entry(const Map& map, const std::string& name)
+{
+    const auto it = map.find(name);
+    if (it == map.end())
+        throw Error("importState: the state has no entry '" + name + "'");
+    return it->second;
+}
+} // namespace stateDetail
+
+template <class Exec>
+SystemState EngineImpl<Exec>::exportState() const
+{
+    using namespace stateDetail;
+    SystemState s;
+    for (int f = 0; f < kRealFieldCount; ++f)
+        s.reals[std::string("grain.") + realFieldInfo(f).name] = grains_.hostReal(f);
+    for (int f = 0; f < kIntFieldCount; ++f)
+    {
+        const std::vector<int> v = grains_.hostInt(f);
+        s.integers[std::string("grain.") + intFieldInfo(f).name].assign(v.begin(), v.end());
+    }
+    std::vector<int> ints;
+    toHost(pairs_.start, ints);
+    s.integers["pairs.start"].assign(ints.begin(), ints.end());
+    toHost(pairs_.partner, ints);
+    s.integers["pairs.partner"].assign(ints.begin(), ints.end());
+    toHost(pairs_.incomingStart, ints);
+    s.integers["pairs.incomingStart"].assign(ints.begin(), ints.end());
+    toHost(pairs_.incomingPair, ints);
+    s.integers["pairs.incomingPair"].assign(ints.begin(), ints.end());
+    toHost(pairs_.history, s.reals["pairs.history"]);
+    std::vector<double>& walls = s.reals["walls.real"];
+    std::vector<std::int64_t>& wallInts = s.integers["walls.int"];
+    for (const WallState& w : walls_)
+    {
+        walls.insert(walls.end(), {w.position, w.velocity, w.acceleration, w.grainForce,
+                                   w.spec.velocity, w.spec.mass, w.spec.normalStress});
+        wallInts.insert(wallInts.end(),
+                        {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
+                         std::int64_t(w.spec.frictional)});
+    }
+    s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
+    s.integers["counters"] = {steps_, std::int64_t(rebuilds_), grainsAtLastBuild_,
+                              std::int64_t(needRebuild_), std::int64_t(forcesStale_),
+                              grains_.size()};
+    return s;
+}
+
+template <class Exec>
+void EngineImpl<Exec>::importState(const SystemState& s)
+{
+    using namespace stateDetail;
+    const std::vector<std::int64_t>& counters = entry(s.integers, "counters");
+    if (counters.size() != 6)
+        throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
+                    " entries, expected 6");
+    const int n = int(counters[5]);
+    grains_.resizeForImport(n);
+    for (int f = 0; f < kRealFieldCount; ++f)
+    {
+        const std::string name = std::string("grain.") + realFieldInfo(f).name;
+        const std::vector<double>& v = entry(s.reals, name);
+        if (v.size() != std::size_t(realFieldInfo(f).components) * n)
+            throw Error("importState: '" + name + "' has " + std::to_string(v.size()) +
+                        " values for " + std::to_string(n) + " grains");
+        grains_.setReal(f, v);
+    }
+    for (int f = 0; f < kIntFieldCount; ++f)
+    {
+        const std::string name = std::string("grain.") + intFieldInfo(f).name;
+        const std::vector<std::int64_t>& v = entry(s.integers, name);
+        if (v.size() != std::size_t(intFieldInfo(f).components) * n)
+            throw Error("importState: '" + name + "' has the wrong size");
+        grains_.setInt(f, std::vector<int>(v.begin(), v.end()));
+    }
+    auto ints = [&](const char* name) {
+        const std::vector<std::int64_t>& v = entry(s.integers, name);
+        return std::vector<int>(v.begin(), v.end());
+    };
+    fromHost(ints("pairs.start"), pairs_.start);
+    fromHost(ints("pairs.partner"), pairs_.partner);
+    fromHost(ints("pairs.incomingStart"), pairs_.incomingStart);
+    fromHost(ints("pairs.incomingPair"), pairs_.incomingPair);
+    fromHost(entry(s.reals, "pairs.history"), pairs_.history);
+    pairs_.reaction.assign(6 * pairs_.partner.size(), 0.0);
+    if (pairs_.history.size() != 3 * kHistoryVectors * pairs_.partner.size())
+        throw Error("importState: pair history and pair list sizes disagree");
+
+    const std::vector<double>& walls = entry(s.reals, "walls.real");
+    const std::vector<std::int64_t>& wallInts = entry(s.integers, "walls.int");
+    const std::size_t wallCount = wallInts.size() / 3;
+    if (walls.size() != 7 * wallCount || wallCount > std::size_t(kMaxWalls))
+        throw Error("importState: wall data is inconsistent");
+    walls_.assign(wallCount, WallState());
+    for (std::size_t w = 0; w < wallCount; ++w)
+    {
+        WallState& ws = walls_[w];
+        const double* r = &walls[7 * w];
+        ws.position = r[0];
+        ws.velocity = r[1];
+        ws.acceleration = r[2];
+        ws.grainForce = r[3];
+        ws.spec.position = r[0];
+        ws.spec.velocity = r[4];
+        ws.spec.mass = r[5];
+        ws.spec.normalStress = r[6];
+        ws.spec.side = WallSpec::Side(wallInts[3 * w]);
+        ws.spec.mode = WallSpec::Mode(wallInts[3 * w + 1]);
+        ws.spec.frictional = wallInts[3 * w + 2] != 0;
+    }
+    const std::vector<double>& clock = entry(s.reals, "clock");
+    if (clock.size() != 3)
+        throw Error("importState: 'clock' must have 3 entries");
+    time_ = clock[0];
+    params_.timeStep = clock[1];
+    params_.viscousDrag = clock[2];
+    steps_ = counters[0];
+    rebuilds_ = std::size_t(counters[1]);
+    grainsAtLastBuild_ = int(counters[2]);
+    needRebuild_ = counters[3] != 0;
+    forcesStale_ = counters[4] != 0;
+    oldPairs_ = PairStorage<Exec>();
+}
+
+} // namespace detail
+} // namespace dem

@@ -1,0 +1,273 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "demCloud.H"
+#include "demStateFile.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(demCloud, 0);
+}
+
+const char* const Foam::demCloud::topWall0Key = "demCloud.topWallInitialPosition";
+const char* const Foam::demCloud::displacement0Key = "demCloud.displacementAtStart";
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCloud::demCloud(const fvMesh& mesh)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            "demCloud",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    properties_
+    (
+        IOobject
+        (
+            "demProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    grid_(mesh),
+    system_(),
+    topWall_(-1),
+    topWall0_(0),
+    asciiOutput_(false),
+    simStart_(mesh.time().value()),
+    particleSteps_(0),
+    stepSeconds_(0)
+{
+    Info<< "Reading grains (" << properties_.objectPath() << ")" << endl;
+
+    if (properties_.found("output"))
+    {
+        const word format
+        (
+            properties_.subDict("output").getOrDefault<word>("format", "binary")
+        );
+        if (format != "binary" && format != "ascii")
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'output/format' in " << properties_.name()
+                << " is '" << format << "'; valid: binary ascii" << nl
+                << exit(FatalIOError);
+        }
+        asciiOutput_ = (format == "ascii");
+    }
+
+    bool fromState = false;
+    try
+    {
+        system_.reset(new dem::System(readParameters()));
+        addWalls();
+
+        const fileName statePath(mesh.time().timePath()/"demState");
+        if (isFile(statePath))
+        {
+            fromState = true;
+            startFromState(statePath);
+        }
+        else
+        {
+            addGrainsFromFile();
+            checkGrainsInsideMesh(mesh.time().timePath()/"grains");
+        }
+        checkTimeStep();
+        Info<< "    backend " << system_->backendName() << ", "
+            << system_->threadCount() << " thread(s)" << endl;
+    }
+    catch (const dem::Error& err)
+    {
+        FatalIOErrorInFunction(properties_)
+            << err.what() << nl << "(while setting up the grains of "
+            << properties_.objectPath() << ")" << nl << exit(FatalIOError);
+    }
+
+    if (topWall_ >= 0 && !fromState)
+    {
+        topWall0_ = system_->wall(topWall_).position;
+    }
+    if (displacement0_.empty())
+    {
+        displacement0_.assign(3*system_->grainCount(), 0.0);
+    }
+
+    wallStart_ = std::chrono::steady_clock::now();
+    lastReport_ = wallStart_;
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::demCloud::~demCloud()
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demCloud::reportProgress()
+{
+    using clock = std::chrono::steady_clock;
+    const auto now = clock::now();
+    if (std::chrono::duration<double>(now - lastReport_).count() < 5)
+    {
+        return;
+    }
+    lastReport_ = now;
+
+    const Time& runTime = mesh_.time();
+    const scalar elapsed = std::chrono::duration<double>(now - wallStart_).count();
+    const scalar done = runTime.value() - simStart_;
+    const scalar total = runTime.endTime().value() - simStart_;
+    const scalar left = done > 0 ? elapsed*(total - done)/done : 0;
+
+    Info<< "Progress: t = " << runTime.timeName() << " s, "
+        << label(100*(runTime.value()/runTime.endTime().value()))
+        << " %, " << particleStepsPerSecond() << " particle-steps/s, "
+        << "about " << label(left) << " s left" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demCloud::evolve(const scalar dtFluid)
+{
+    const scalar dt = system_->timeStep();
+    const label nSub = label(std::round(dtFluid/dt));
+
+    if (nSub < 1 || mag(nSub*dt - dtFluid) > 1e-9*dtFluid)
+    {
+        FatalErrorInFunction
+            << "The fluid time step (deltaT " << dtFluid << " s in "
+            << "system/controlDict) must be a whole multiple of the DEM time"
+            << " step (timeStep " << dt << " s in "
+            << properties_.objectPath() << ")" << nl << exit(FatalError);
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    try
+    {
+        system_->step(nSub);
+    }
+    catch (const dem::Error& err)
+    {
+        FatalErrorInFunction
+            << err.what() << nl << "(at t = " << mesh_.time().timeName()
+            << " s, grains of " << properties_.objectPath() << ")" << nl
+            << exit(FatalError);
+    }
+    stepSeconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+    particleSteps_ += double(nSub)*system_->grainCount();
+
+    reportProgress();
+}
+
+
+void Foam::demCloud::deposit
+(
+    const scalar dtFluid,
+    volScalarField& porosity,
+    volScalarField& predictedPorosity,
+    volVectorField& Us
+) const
+{
+    const label n = grid_.size();
+    std::vector<double> phi(n), phiPred(n), u(3*n);
+
+    system_->deposit(grid_.grid(), dtFluid, phi.data(), phiPred.data(), u.data());
+
+    grid_.toMesh(phi, porosity.primitiveFieldRef());
+    grid_.toMesh(phiPred, predictedPorosity.primitiveFieldRef());
+    grid_.toMesh(u, Us.primitiveFieldRef());
+    porosity.correctBoundaryConditions();
+    predictedPorosity.correctBoundaryConditions();
+    Us.correctBoundaryConditions();
+}
+
+
+void Foam::demCloud::setPressureGradient
+(
+    const volVectorField& gradp,
+    const scalar rhoFluid
+)
+{
+    std::vector<double> g;
+    grid_.toGrid(gradp.primitiveField(), g);
+    system_->setFluid(grid_.grid(), g.data(), rhoFluid);
+}
+
+
+dem::GrainData Foam::demCloud::grains() const
+{
+    dem::GrainData g = system_->grains();
+    for (size_t i = 0; i < g.displacement.size(); ++i)
+    {
+        g.displacement[i] -= displacement0_[i];
+    }
+    return g;
+}
+
+
+Foam::scalar Foam::demCloud::topWallPosition() const
+{
+    return topWall_ >= 0 ? system_->wall(topWall_).position : GREAT;
+}
+
+
+Foam::scalar Foam::demCloud::topWallStress() const
+{
+    if (topWall_ < 0)
+    {
+        return 0;
+    }
+    const dem::WallSpec& spec = system_->wall(topWall_).spec;
+    return spec.mode == dem::WallSpec::Mode::stress ? spec.normalStress : 0;
+}
+
+
+Foam::scalar Foam::demCloud::boxArea() const
+{
+    const dem::UniformGrid& g = grid_.grid();
+    return g.n[0]*g.spacing[0]*g.n[1]*g.spacing[1];
+}
+
+
+Foam::scalar Foam::demCloud::meanDiameter() const
+{
+    const dem::GrainData g = system_->grains();
+    scalar sum = 0;
+    for (const double r : g.radius)
+    {
+        sum += 2*r;
+    }
+    return g.radius.empty() ? 0 : sum/g.radius.size();
+}
+
+
+Foam::scalar Foam::demCloud::particleStepsPerSecond() const
+{
+    return stepSeconds_ > 0 ? particleSteps_/stepSeconds_ : 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,397 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+-------------------------------------------------------------------------------
+    Reading constant/demProperties and the start time's grains.
+\*---------------------------------------------------------------------------*/
+
+#include "demCloud.H"
+#include "inputChecks.H"
+#include "demStateFile.H"
+#include "Enum.H"
+#include "IFstream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+static const Enum<dem::Backend> backendNames
+({
+    { dem::Backend::automatic, "auto" },
+    { dem::Backend::cpu, "cpu" },
+    { dem::Backend::cuda, "cuda" },
+});
+
+static const Enum<dem::WallSpec::Side> wallSideNames
+({
+    { dem::WallSpec::Side::lower, "lower" },
+    { dem::WallSpec::Side::upper, "upper" },
+});
+
+static const Enum<dem::WallSpec::Mode> wallModeNames
+({
+    { dem::WallSpec::Mode::fixed, "fixed" },
+    { dem::WallSpec::Mode::velocity, "velocity" },
+    { dem::WallSpec::Mode::stress, "stress" },
+});
+
+static const Enum<dem::GrainFlag> grainFlagNames
+({
+    { dem::GrainFlag::free, "free" },
+    { dem::GrainFlag::fixed, "fixed" },
+    { dem::GrainFlag::prescribedVelocity, "prescribedVelocity" },
+    { dem::GrainFlag::translationOnly, "translationOnly" },
+});
+
+
+//- A contact law from its dictionary; every entry checked
+static dem::ContactMaterial readContact(const dictionary& dict)
+{
+    dem::ContactMaterial m;
+    m.normalStiffness = inputChecks::getPositive(dict, "normalStiffness");
+    m.tangentialStiffness = dict.getOrDefault<scalar>("tangentialStiffness", 0);
+    m.normalDamping = dict.getOrDefault<scalar>("normalDamping", 0);
+    m.tangentialDamping = dict.getOrDefault<scalar>("tangentialDamping", 0);
+    m.friction = dict.getOrDefault<scalar>("friction", 0);
+
+    const std::pair<const char*, scalar> nonNegative[] =
+    {
+        {"tangentialStiffness", m.tangentialStiffness},
+        {"normalDamping", m.normalDamping},
+        {"tangentialDamping", m.tangentialDamping},
+        {"friction", m.friction},
+    };
+    for (const auto& entry : nonNegative)
+    {
+        if (entry.second < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << entry.first << "' in " << dict.name()
+                << " must be >= 0, found " << entry.second << nl
+                << exit(FatalIOError);
+        }
+    }
+    return m;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+dem::Parameters Foam::demCloud::readParameters() const
+{
+    const dictionary& dict = properties_;
+    dem::Parameters p;
+
+    p.backend = backendNames.get("backend", dict);
+    p.threads = dict.getOrDefault<label>("threads", 0);
+    p.timeStep = inputChecks::getPositive(dict, "timeStep");
+    p.maxTimeStepFraction = dict.getOrDefault<scalar>("maxTimeStepFraction", 0.2);
+    p.neighbourSkin = dict.getOrDefault<scalar>("neighbourSkin", 0);
+    p.viscousDrag = dict.getOrDefault<scalar>("viscousDrag", 0);
+    p.defaultDensity = inputChecks::getPositive(dict, "density");
+
+    const vector g(dict.get<vector>("gravity"));
+    p.gravity = {g.x(), g.y(), g.z()};
+
+    p.grainGrain = readContact(dict.subDict("contact"));
+    p.grainWall =
+        dict.found("wallContact")
+      ? readContact(dict.subDict("wallContact"))
+      : p.grainGrain;
+
+    // The periodic box is the mesh's horizontal extent
+    const dem::UniformGrid& g3 = grid_.grid();
+    for (int d = 0; d < 2; ++d)
+    {
+        p.boxLower[d] = g3.origin[d];
+        p.boxUpper[d] = g3.origin[d] + g3.n[d]*g3.spacing[d];
+        p.periodic[d] = true;
+    }
+
+    if (p.neighbourSkin < 0 || p.threads < 0 || p.viscousDrag < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'neighbourSkin', 'threads' and 'viscousDrag' in "
+            << dict.name() << " must be >= 0" << nl << exit(FatalIOError);
+    }
+    if (!(p.maxTimeStepFraction > 0 && p.maxTimeStepFraction <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'maxTimeStepFraction' in " << dict.name()
+            << " must lie in (0, 1], found " << p.maxTimeStepFraction << nl
+            << exit(FatalIOError);
+    }
+
+    return p;
+}
+
+
+void Foam::demCloud::addWalls()
+{
+    const dictionary& walls = properties_.subDict("walls");
+    const dem::UniformGrid& g = grid_.grid();
+    const scalar zMin = g.origin[2];
+    const scalar zMax = g.origin[2] + g.n[2]*g.spacing[2];
+    scalar topZ = -GREAT;
+
+    for (const entry& e : walls)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(walls)
+                << "Entry '" << e.keyword() << "' in " << walls.name()
+                << " must be a wall dictionary { side ...; mode ...; }" << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& dict = e.dict();
+
+        dem::WallSpec w;
+        w.side = wallSideNames.get("side", dict);
+        w.mode = wallModeNames.get("mode", dict);
+        w.position = dict.get<scalar>("position");
+        w.velocity = dict.getOrDefault<scalar>("velocity", 0);
+        w.frictional = dict.getOrDefault<bool>("frictional", true);
+
+        if (w.mode == dem::WallSpec::Mode::stress)
+        {
+            w.mass = inputChecks::getPositive(dict, "mass");
+            w.normalStress = dict.get<scalar>("normalStress");
+        }
+        if (w.position < zMin - SMALL || w.position > zMax + SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'position' (" << w.position << ") of wall "
+                << e.keyword() << " in " << dict.name()
+                << " lies outside the mesh, z in [" << zMin << ", " << zMax
+                << "]" << nl << exit(FatalIOError);
+        }
+
+        wallSpecs_.push_back(w);
+        const int index = system_->addWall(w);
+        if (w.side == dem::WallSpec::Side::upper && w.position > topZ)
+        {
+            topZ = w.position;
+            topWall_ = index;
+        }
+        Info<< "    wall " << e.keyword() << ": " << wallSideNames[w.side]
+            << ", " << wallModeNames[w.mode] << " at z = " << w.position
+            << endl;
+    }
+}
+
+
+void Foam::demCloud::addGrainsFromFile()
+{
+    const fileName path(mesh_.time().timePath()/"grains");
+    IFstream is(path);
+
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot read the grains: neither " << path << " (x y z r per"
+            << " line) nor a restart file "
+            << mesh_.time().timePath()/"demState" << " exists" << nl
+            << exit(FatalError);
+    }
+
+    std::vector<dem::GrainInit> grains;
+    std::string line;
+    label lineNo = 0;
+    auto& stream = is.stdStream();
+    while (std::getline(stream, line))
+    {
+        ++lineNo;
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        dem::GrainInit gi;
+        if (!(ls >> gi.position[0] >> gi.position[1] >> gi.position[2] >> gi.radius)
+         || !(gi.radius > 0))
+        {
+            FatalErrorInFunction
+                << path << " line " << lineNo << ": expected 'x y z r' with"
+                << " r > 0, found '" << line << "'" << nl << exit(FatalError);
+        }
+        grains.push_back(gi);
+    }
+
+    if (grains.empty())
+    {
+        FatalErrorInFunction
+            << path << " holds no grains" << nl << exit(FatalError);
+    }
+
+    system_->addGrains(grains);
+    Info<< "    " << grains.size() << " grains from " << path << endl;
+    applyGrainFlags();
+}
+
+
+void Foam::demCloud::applyGrainFlags()
+{
+    if (!properties_.found("grainFlags"))
+    {
+        return;
+    }
+
+    const dem::GrainData g = system_->grains();
+    const dictionary& flags = properties_.subDict("grainFlags");
+    for (const entry& e : flags)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(flags)
+                << "Entry '" << e.keyword() << "' in " << flags.name()
+                << " must be a dictionary { flag ...; zMin ...; zMax ...; }"
+                << nl << exit(FatalIOError);
+        }
+        const dictionary& dict = e.dict();
+        const dem::GrainFlag flag = grainFlagNames.get("flag", dict);
+        const scalar zLo = dict.getOrDefault<scalar>("zMin", -GREAT);
+        const scalar zHi = dict.getOrDefault<scalar>("zMax", GREAT);
+        vector2D v(Zero);
+        if (flag == dem::GrainFlag::prescribedVelocity)
+        {
+            v = dict.get<vector2D>("velocity");
+        }
+
+        std::vector<int> selected;
+        for (size_t i = 0; i < g.radius.size(); ++i)
+        {
+            const scalar z = g.position[3*i + 2];
+            if (z >= zLo && z < zHi)
+            {
+                selected.push_back(int(i));
+            }
+        }
+        system_->setGrainFlags(selected, flag, v.x(), v.y());
+        Info<< "    grain flags " << e.keyword() << ": "
+            << grainFlagNames[flag] << " for " << selected.size()
+            << " grains" << endl;
+    }
+}
+
+
+void Foam::demCloud::startFromState(const fileName& path)
+{
+    dem::SystemState state(readDemState(path));
+
+    // The cloud's own entries travel in the same file
+    const auto own = [&](const char* key) -> std::vector<double>
+    {
+        auto iter = state.reals.find(key);
+        if (iter == state.reals.end())
+        {
+            return {};
+        }
+        std::vector<double> values(std::move(iter->second));
+        state.reals.erase(iter);
+        return values;
+    };
+    const std::vector<double> topWall0(own(topWall0Key));
+    std::vector<double> displacement0(own(displacement0Key));
+
+    system_->importState(state);
+    checkGrainsInsideMesh(path);
+
+    if (system_->wallCount() != int(wallSpecs_.size()))
+    {
+        FatalIOErrorInFunction(properties_)
+            << path << " holds " << system_->wallCount() << " walls but "
+            << properties_.name() << " defines " << wallSpecs_.size() << nl
+            << exit(FatalIOError);
+    }
+
+    const scalar t = mesh_.time().value();
+    const bool restart =
+        mag(system_->time() - t) <= 1e-9*max(scalar(1), mag(t))
+     && topWall0.size() == 1;
+
+    if (restart)
+    {
+        topWall0_ = topWall0[0];
+        displacement0_ = std::move(displacement0);
+        Info<< "    restart from " << path << " (" << system_->grainCount()
+            << " grains)" << endl;
+        return;
+    }
+
+    // A packing prepared by another run: this case's settings apply, and
+    // displacements and dilation count from here
+    Info<< "    packing prepared by another run (" << path << ", its clock at "
+        << system_->time() << " s): applying walls, flags, time step and"
+        << " drag of " << properties_.name() << endl;
+    for (size_t w = 0; w < wallSpecs_.size(); ++w)
+    {
+        system_->setWallMotion(int(w), wallSpecs_[w]);
+    }
+    const dem::Parameters p(readParameters());
+    system_->setTimeStep(p.timeStep);
+    system_->setViscousDrag(p.viscousDrag);
+    applyGrainFlags();
+    displacement0_ = system_->grains().displacement;
+    if (topWall_ >= 0)
+    {
+        topWall0_ = system_->wall(topWall_).position;
+    }
+}
+
+
+void Foam::demCloud::checkGrainsInsideMesh(const fileName& source) const
+{
+    const dem::GrainData g = system_->grains();
+    const dem::UniformGrid& grid = grid_.grid();
+    const scalar zMin = grid.origin[2];
+    const scalar zMax = grid.origin[2] + grid.n[2]*grid.spacing[2];
+
+    for (size_t i = 0; i < g.radius.size(); ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            const scalar lo = grid.origin[d];
+            const scalar hi = (d < 2)
+                ? grid.origin[d] + grid.n[d]*grid.spacing[d] : zMax;
+            const scalar x = g.position[3*i + d];
+            if (!(x >= lo && x <= hi))
+            {
+                FatalErrorInFunction
+                    << "Grain " << label(i) << " of " << source << " at ("
+                    << g.position[3*i] << " " << g.position[3*i + 1] << " "
+                    << g.position[3*i + 2] << ") lies outside the mesh, "
+                    << vector::componentNames[d] << " in [" << lo << ", "
+                    << hi << "]" << nl << exit(FatalError);
+            }
+        }
+    }
+    (void)zMin;
+}
+
+
+void Foam::demCloud::checkTimeStep() const
+{
+    const scalar dt = system_->timeStep();
+    const scalar critical = system_->criticalTimeStep();
+    const scalar fraction = system_->parameters().maxTimeStepFraction;
+
+    Info<< "    DEM time step " << dt << " s = "
+        << dt/critical << " sqrt(m_min/k_max)" << endl;
+
+    if (dt > fraction*critical)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'timeStep' (" << dt << " s) in " << properties_.name()
+            << " is above the stable limit maxTimeStepFraction"
+            << " sqrt(m_min/k_max) = " << fraction << " x " << critical
+            << " = " << fraction*critical << " s" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,161 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "grainDiagnostics.H"
+#include "demCloud.H"
+#include "volFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(grainDiagnostics, 0);
+    addToRunTimeSelectionTable(functionObject, grainDiagnostics, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::grainDiagnostics::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "Grain diagnostics (DESIGN.md section 5)");
+    writeCommented(os, "time");
+    for
+    (
+        const char* column :
+        {
+            "shearStrain", "tau", "tauOverSigma0", "dilation", "topWall",
+            "pMin", "pMean", "pMax", "kineticEnergy", "contactsPerGrain",
+            "particleStepsPerS", "solidVolumeError"
+        }
+    )
+    {
+        writeTabbed(os, column);
+    }
+    os << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::grainDiagnostics::grainDiagnostics
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict)
+{
+    read(dict);
+    writeFileHeader(file());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::grainDiagnostics::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+    return true;
+}
+
+
+bool Foam::functionObjects::grainDiagnostics::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::grainDiagnostics::write()
+{
+    const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
+    const dem::System& dem = cloud.system();
+    const dem::GrainData g = cloud.grains();
+    const label n = g.radius.size();
+
+    // Sample height between the lowest lower wall and the top wall
+    scalar bottom = GREAT;
+    for (int w = 0; w < dem.wallCount(); ++w)
+    {
+        const dem::WallData wall = dem.wall(w);
+        if (wall.spec.side == dem::WallSpec::Side::lower)
+        {
+            bottom = min(bottom, wall.position);
+        }
+    }
+
+    scalar shiftX = 0, kinetic = 0, grainVolume = 0;
+    label nPrescribed = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = g.radius[i];
+        const scalar m = g.mass[i];
+        scalar v2 = 0, w2 = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            v2 += sqr(g.velocity[3*i + d]);
+            w2 += sqr(g.angularVelocity[3*i + d]);
+        }
+        kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
+        grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
+        if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
+        {
+            shiftX += g.displacement[3*i];
+            ++nPrescribed;
+        }
+    }
+
+    const scalar top = cloud.topWallPosition();
+    const scalar height =
+        (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
+    const scalar strain =
+        (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
+    const scalar tau = -dem.prescribedGrainForceX()/cloud.boxArea();
+    const scalar sigma0 = cloud.topWallStress();
+
+    scalar pMin = 0, pMean = 0, pMax = 0;
+    if (mesh_.foundObject<volScalarField>("p"))
+    {
+        const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
+        pMin = min(p.primitiveField());
+        pMax = max(p.primitiveField());
+        pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
+    }
+
+    // Conservation of the deposit, before any porosity clamp
+    const dem::UniformGrid& grid = cloud.grid().grid();
+    std::vector<double> solid(grid.cellCount());
+    dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
+    scalar deposited = 0;
+    for (const double s : solid)
+    {
+        deposited += s;
+    }
+
+    Ostream& os = file();
+    writeCurrentTime(os);
+    os  << tab << strain << tab << tau << tab
+        << (sigma0 > 0 ? tau/sigma0 : 0) << tab
+        << (cloud.hasTopWall() ? (top - cloud.topWallInitialPosition())
+            /cloud.meanDiameter() : 0) << tab
+        << (cloud.hasTopWall() ? top : 0) << tab
+        << pMin << tab << pMean << tab << pMax << tab
+        << kinetic << tab
+        << (n ? 2.0*dem.contactCount()/n : 0) << tab
+        << cloud.particleStepsPerSecond() << tab
+        << (grainVolume > 0 ? deposited/grainVolume - 1 : 0) << endl;
+
+    return true;
+}
+
+
+// ************************************************************************* //
