@@ -30,3 +30,57 @@ def drained_column_cell_mean(z0, z1, T, H, terms=200):
     M = (2 * j + 1) * np.pi / 2
     mean_sin = H / M * (np.cos(M * z0 / H) - np.cos(M * z1 / H)) / (z1 - z0)
     return np.sum(2 / M * mean_sin * np.exp(-M**2 * T))
+
+
+def degree_of_consolidation(Tv, terms=200):
+    """Terzaghi: U(T_v) = 1 - sum 2/M^2 exp(-M^2 T_v), M = (2j+1) pi/2
+    (VALIDATION.md section 3)."""
+    j = np.arange(terms)
+    M = (2 * j + 1) * np.pi / 2
+    Tv = np.atleast_1d(Tv)[:, None]
+    return 1 - np.sum(2 / M**2 * np.exp(-M**2 * Tv), axis=1)
+
+
+def consolidation_coefficient(k, mu, E_oed, porosity, beta):
+    """c_v of a DEM-Darcy packing in which the fluid acts on the grains by
+    -V grad p (Damsgaard et al. 2015, eq. 12). Skeleton equilibrium then
+    reads sigma' + (1 - phi) p = const, so the grains see only (1 - phi) of
+    the pore pressure gradient and
+        c_v = (k/mu) / (phi beta + (1 - phi)/E_oed),
+    which differs from the classical (k/mu)/(phi beta + 1/E_oed) by the
+    factor (1 - phi) on 1/E_oed (see tests/README.md)."""
+    return (k / mu) / (porosity * beta + (1 - porosity) / E_oed)
+
+
+def undrained_pressure(load, porosity, beta, E_oed):
+    """Excess pore pressure right after a load step in the same model:
+    dp = d_sigma / ((1 - phi) + phi beta E_oed)."""
+    return load / ((1 - porosity) + porosity * beta * E_oed)
+
+
+def instantaneous_settlement(porosity, beta, E_oed):
+    """Fraction of the final settlement reached at once on loading, while the
+    compressible pore fluid is still undrained: U0 = phi beta E/((1 - phi) +
+    phi beta E); the rest follows Terzaghi, U = U0 + (1 - U0) U(T_v)."""
+    x = porosity * beta * E_oed
+    return x / ((1 - porosity) + x)
+
+
+def ramp_loaded_consolidation(Tv, Tramp, U0, terms=200):
+    """Settlement fraction U and base pressure fraction p_base/p0 for a load
+    applied linearly over 0 <= T_v <= Tramp and then held, by superposing
+    (Duhamel) the step responses U0 + (1 - U0) U(T) and the base isochrone
+    (Olson 1977 gives the same for U0 = 0). p0 is the undrained pressure of
+    the full load."""
+    j = np.arange(terms)
+    M = (2 * j + 1) * np.pi / 2
+    Tv = np.atleast_1d(np.asarray(Tv, dtype=float))[:, None]
+    # integral over the loading time of exp(-M^2 (T - s)) ds / Tramp
+    s_end = np.minimum(Tv, Tramp)
+    integral = (np.exp(-M**2 * (Tv - s_end)) - np.exp(-M**2 * Tv)) / (M**2 * Tramp)
+    load = s_end[:, 0] / Tramp
+    # U(T) = 1 - sum 2/M^2 exp(-M^2 T): superposed over the ramp
+    U_cons = load - np.sum(2 / M**2 * integral, axis=1)
+    U = U0 * load + (1 - U0) * U_cons
+    p_base = np.sum(2 / M * np.sin(M) * integral, axis=1)
+    return U, p_base

@@ -31,10 +31,10 @@ def test_unknown_solid_phase_lists_valid_names():
         assert name in log.split("Valid solid phase types")[1]
 
 
-@pytest.mark.parametrize("entry", ["mu", "beta", "rho"])
-def test_non_positive_fluid_property(entry):
+@pytest.mark.parametrize("entry,rule", [("mu", "> 0"), ("beta", "> 0"), ("rho", ">= 0")])
+def test_negative_fluid_property(entry, rule):
     log = failing_run(f"bad_{entry}", lambda c: c.set(PROPS, entry, "-1"))
-    assert f"Entry '{entry}'" in log and "must be > 0, found -1" in log
+    assert f"Entry '{entry}'" in log and f"must be {rule}, found -1" in log
     assert "darcyProperties" in log
 
 

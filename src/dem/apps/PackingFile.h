@@ -13,8 +13,8 @@ namespace dem
 
 struct Packing
 {
-    double length = 0;       //!< periodic box length in x and y [m]
-    double height = 0;       //!< far-away bound in z [m]
+    double length = 0; //!< periodic box length in x and y [m]
+    double height = 0; //!< far-away bound in z [m]
     std::vector<GrainInit> grains;
 };
 

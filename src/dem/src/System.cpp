@@ -151,29 +151,72 @@ void System::step(int nSteps)
             std::ostringstream msg;
             msg << "timeStep = " << p.timeStep << " s exceeds the limit "
                 << p.maxTimeStepFraction * critical << " s = maxTimeStepFraction ("
-                << p.maxTimeStepFraction << ") x critical time step sqrt(m_min / k_max) = "
-                << critical << " s (m_min = " << impl_->engine->minimumMass()
-                << " kg, k_max = " << stiffest(p) << " N/m); reduce timeStep";
+                << p.maxTimeStepFraction
+                << ") x critical time step sqrt(m_min / k_max) = " << critical
+                << " s (m_min = " << impl_->engine->minimumMass() << " kg, k_max = " << stiffest(p)
+                << " N/m); reduce timeStep";
             throw Error(msg.str());
         }
     }
     impl_->engine->step(nSteps);
 }
 
-std::size_t System::grainCount() const { return impl_->engine->grainCount(); }
-GrainData System::grains() const { return impl_->engine->grains(); }
-int System::wallCount() const { return impl_->engine->wallCount(); }
-WallData System::wall(int wall) const { return impl_->engine->wall(wall); }
-double System::prescribedGrainForceX() const { return impl_->engine->prescribedGrainForceX(); }
-std::size_t System::contactCount() const { return impl_->engine->contactCount(); }
-std::size_t System::pairCount() const { return impl_->engine->pairCount(); }
-std::size_t System::neighbourRebuildCount() const { return impl_->engine->rebuildCount(); }
-double System::time() const { return impl_->engine->time(); }
-long long System::stepCount() const { return impl_->engine->stepCount(); }
-double System::timeStep() const { return impl_->parameters.timeStep; }
-std::string System::backendName() const { return impl_->engine->name(); }
-int System::threadCount() const { return impl_->engine->threads(); }
-const Parameters& System::parameters() const { return impl_->parameters; }
+std::size_t System::grainCount() const
+{
+    return impl_->engine->grainCount();
+}
+GrainData System::grains() const
+{
+    return impl_->engine->grains();
+}
+int System::wallCount() const
+{
+    return impl_->engine->wallCount();
+}
+WallData System::wall(int wall) const
+{
+    return impl_->engine->wall(wall);
+}
+double System::prescribedGrainForceX() const
+{
+    return impl_->engine->prescribedGrainForceX();
+}
+std::size_t System::contactCount() const
+{
+    return impl_->engine->contactCount();
+}
+std::size_t System::pairCount() const
+{
+    return impl_->engine->pairCount();
+}
+std::size_t System::neighbourRebuildCount() const
+{
+    return impl_->engine->rebuildCount();
+}
+double System::time() const
+{
+    return impl_->engine->time();
+}
+long long System::stepCount() const
+{
+    return impl_->engine->stepCount();
+}
+double System::timeStep() const
+{
+    return impl_->parameters.timeStep;
+}
+std::string System::backendName() const
+{
+    return impl_->engine->name();
+}
+int System::threadCount() const
+{
+    return impl_->engine->threads();
+}
+const Parameters& System::parameters() const
+{
+    return impl_->parameters;
+}
 
 void System::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                      double* predictedPorosity, double* meanVelocity, double* solidVolume) const
@@ -186,9 +229,15 @@ void System::setFluid(const UniformGrid& grid, const double* gradP, double fluid
     impl_->engine->setFluid(grid, gradP, fluidDensity);
 }
 
-void System::clearFluid() { impl_->engine->clearFluid(); }
+void System::clearFluid()
+{
+    impl_->engine->clearFluid();
+}
 
-SystemState System::exportState() const { return impl_->engine->exportState(); }
+SystemState System::exportState() const
+{
+    return impl_->engine->exportState();
+}
 
 void System::importState(const SystemState& state)
 {

@@ -30,7 +30,8 @@ ImpactResult closedForm(double reducedMass, double k, double gamma, double v)
         const double t = r.duration * s / 200000.0;
         const double decay = std::exp(-zeta * omega0 * t);
         const double x = v / omegaD * decay * std::sin(omegaD * t);
-        const double xdot = v * decay * (std::cos(omegaD * t) - zeta * omega0 / omegaD * std::sin(omegaD * t));
+        const double xdot =
+            v * decay * (std::cos(omegaD * t) - zeta * omega0 / omegaD * std::sin(omegaD * t));
         r.maxOverlap = std::max(r.maxOverlap, x);
         r.peakForce = std::max(r.peakForce, k * x + gamma * xdot);
     }
@@ -75,9 +76,10 @@ void expectClose(const ImpactResult& sim, const ImpactResult& ref, double tolera
     EXPECT_NEAR(sim.maxOverlap / ref.maxOverlap, 1.0, tolerance) << "maximum overlap";
     EXPECT_NEAR(sim.peakForce / ref.peakForce, 1.0, tolerance) << "peak force";
     EXPECT_NEAR(sim.restitution / ref.restitution, 1.0, tolerance) << "restitution";
-    std::printf("  duration %.6e (ref %.6e), overlap %.6e (%.6e), force %.6e (%.6e), e %.6f (%.6f)\n",
-                sim.duration, ref.duration, sim.maxOverlap, ref.maxOverlap, sim.peakForce,
-                ref.peakForce, sim.restitution, ref.restitution);
+    std::printf(
+        "  duration %.6e (ref %.6e), overlap %.6e (%.6e), force %.6e (%.6e), e %.6f (%.6f)\n",
+        sim.duration, ref.duration, sim.maxOverlap, ref.maxOverlap, sim.peakForce, ref.peakForce,
+        sim.restitution, ref.restitution);
 }
 
 class Impact : public BackendTest
@@ -101,7 +103,9 @@ protected:
         b.velocity = {-0.5 * v, 0, 0};
         s.addGrains({a, b});
         const ImpactResult sim = simulate(
-            s, [&](const dem::GrainData& g) { return 2 * r - norm(sub(at(g.position, 1), at(g.position, 0))); },
+            s,
+            [&](const dem::GrainData& g)
+            { return 2 * r - norm(sub(at(g.position, 1), at(g.position, 0))); },
             [](const dem::GrainData& g) { return g.velocity[0] - g.velocity[3]; },
             [](const dem::GrainData& g) { return norm(at(g.force, 0)); });
         expectClose(sim, closedForm(reduced, k, p.grainGrain.normalDamping, v), 0.005);
@@ -132,9 +136,21 @@ protected:
 
 } // namespace
 
-TEST_P(Impact, TwoSpheresUndamped) { twoSpheres(0.0); }
-TEST_P(Impact, TwoSpheresDamped) { twoSpheres(0.2); }
-TEST_P(Impact, SphereWallUndamped) { sphereOnWall(0.0); }
-TEST_P(Impact, SphereWallDamped) { sphereOnWall(0.5); }
+TEST_P(Impact, TwoSpheresUndamped)
+{
+    twoSpheres(0.0);
+}
+TEST_P(Impact, TwoSpheresDamped)
+{
+    twoSpheres(0.2);
+}
+TEST_P(Impact, SphereWallUndamped)
+{
+    sphereOnWall(0.0);
+}
+TEST_P(Impact, SphereWallDamped)
+{
+    sphereOnWall(0.5);
+}
 
 DEM_TEST_ON_ALL_BACKENDS(Impact);

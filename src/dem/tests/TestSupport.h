@@ -17,11 +17,26 @@ namespace demTest
 
 using Vec3 = std::array<double, 3>;
 
-inline Vec3 at(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-inline double sphereVolume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
+inline Vec3 at(const std::vector<double>& v, std::size_t i)
+{
+    return {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+}
+inline Vec3 sub(const Vec3& a, const Vec3& b)
+{
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline double dot(const Vec3& a, const Vec3& b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline double norm(const Vec3& a)
+{
+    return std::sqrt(dot(a, a));
+}
+inline double sphereVolume(double r)
+{
+    return 4.0 / 3.0 * M_PI * r * r * r;
+}
 
 //- Fixture: GetParam() is the backend under test.
 class BackendTest : public ::testing::TestWithParam<dem::Backend>
@@ -56,7 +71,7 @@ inline std::string backendName(const ::testing::TestParamInfo<dem::Backend>& inf
 
 } // namespace demTest
 
-#define DEM_TEST_ON_ALL_BACKENDS(Suite)                                                         \
-    INSTANTIATE_TEST_SUITE_P(Backends, Suite,                                                  \
-                             ::testing::Values(dem::Backend::cpu, dem::Backend::cuda),          \
+#define DEM_TEST_ON_ALL_BACKENDS(Suite)                                                            \
+    INSTANTIATE_TEST_SUITE_P(Backends, Suite,                                                      \
+                             ::testing::Values(dem::Backend::cpu, dem::Backend::cuda),             \
                              demTest::backendName)

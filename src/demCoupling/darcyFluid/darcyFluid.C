@@ -25,7 +25,7 @@ Foam::darcyFluid::darcyFluid(const fvMesh& mesh)
     ),
     mu_(inputChecks::getPositive(*this, "mu", dimDynamicViscosity)),
     beta_(inputChecks::getPositive(*this, "beta", dimless/dimPressure)),
-    rho_(inputChecks::getPositive(*this, "rho", dimDensity))
+    rho_(inputChecks::getNonNegative(*this, "rho", dimDensity))
 {
     Info<< "Pore fluid: mu = " << mu_.value() << " Pa s, beta = "
         << beta_.value() << " 1/Pa, rho = " << rho_.value() << " kg/m^3"

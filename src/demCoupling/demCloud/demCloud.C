@@ -147,6 +147,18 @@ void Foam::demCloud::reportProgress()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::demCloud::updateWallStress(const scalar t)
+{
+    forAll(wallStress_, w)
+    {
+        if (wallStress_.set(w) && !wallStress_[w].constant())
+        {
+            system_->setWallStress(w, wallStress_[w].value(t));
+        }
+    }
+}
+
+
 void Foam::demCloud::evolve(const scalar dtFluid)
 {
     const scalar dt = system_->timeStep();
@@ -164,6 +176,8 @@ void Foam::demCloud::evolve(const scalar dtFluid)
     const auto start = std::chrono::steady_clock::now();
     try
     {
+        // Loads held for the fluid step, at its middle
+        updateWallStress(mesh_.time().value() - 0.5*dtFluid);
         system_->step(nSub);
     }
     catch (const dem::Error& err)

@@ -155,10 +155,17 @@ void Foam::demCloud::addWalls()
         w.velocity = dict.getOrDefault<scalar>("velocity", 0);
         w.frictional = dict.getOrDefault<bool>("frictional", true);
 
+        wallStress_.resize(wallStress_.size() + 1);
         if (w.mode == dem::WallSpec::Mode::stress)
         {
             w.mass = inputChecks::getPositive(dict, "mass");
-            w.normalStress = dict.get<scalar>("normalStress");
+            wallStress_.set
+            (
+                wallStress_.size() - 1,
+                Function1<scalar>::New("normalStress", dict)
+            );
+            w.normalStress =
+                wallStress_.last().value(mesh_.time().value());
         }
         if (w.position < zMin - SMALL || w.position > zMax + SMALL)
         {
@@ -209,14 +216,27 @@ void Foam::demCloud::addGrainsFromFile()
         {
             continue;
         }
+        // x y z r, optionally followed by the velocity vx vy vz
         std::istringstream ls(line);
-        dem::GrainInit gi;
-        if (!(ls >> gi.position[0] >> gi.position[1] >> gi.position[2] >> gi.radius)
-         || !(gi.radius > 0))
+        std::vector<double> v;
+        double value;
+        while (ls >> value)
+        {
+            v.push_back(value);
+        }
+        if (!ls.eof() || (v.size() != 4 && v.size() != 7) || !(v[3] > 0))
         {
             FatalErrorInFunction
-                << path << " line " << lineNo << ": expected 'x y z r' with"
-                << " r > 0, found '" << line << "'" << nl << exit(FatalError);
+                << path << " line " << lineNo << ": expected 'x y z r' or"
+                << " 'x y z r vx vy vz' with r > 0, found '" << line << "'"
+                << nl << exit(FatalError);
+        }
+        dem::GrainInit gi;
+        gi.position = {v[0], v[1], v[2]};
+        gi.radius = v[3];
+        if (v.size() == 7)
+        {
+            gi.velocity = {v[4], v[5], v[6]};
         }
         grains.push_back(gi);
     }

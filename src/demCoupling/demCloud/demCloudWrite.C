@@ -11,6 +11,31 @@
 #include "Time.H"
 #include "OSspecific.H"
 
+#include <fstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Grains in the input format 'x y z r', exact to the last digit, so that
+//- a new case can start from them (without contact history)
+void writeGrainsFile(const Foam::fileName& path, const dem::GrainData& g)
+{
+    std::ofstream os(path);
+    os.precision(17);
+    os  << "# darcyDem grains: x y z r [m], one grain per line (written at"
+        << " a write time; demState beside it holds the complete state)\n";
+    for (size_t i = 0; i < g.radius.size(); ++i)
+    {
+        os  << g.position[3*i] << ' ' << g.position[3*i + 1] << ' '
+            << g.position[3*i + 2] << ' ' << g.radius[i] << '\n';
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::demCloud::writeObject
@@ -30,7 +55,9 @@ bool Foam::demCloud::writeObject
     state.reals[displacement0Key] = displacement0_;
     writeDemState(dir/"demState", state);
 
-    grainVtkWriter::writeVtp(dir/"grains.vtp", grains(), asciiOutput_);
+    const dem::GrainData g(grains());
+    grainVtkWriter::writeVtp(dir/"grains.vtp", g, asciiOutput_);
+    writeGrainsFile(dir/"grains", g);
     grainVtkWriter::writePvd(runTime);
 
     return true;

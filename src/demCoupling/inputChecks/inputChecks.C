@@ -50,13 +50,18 @@ Foam::scalar Foam::inputChecks::getInOpenRange
 }
 
 
-Foam::dimensionedScalar Foam::inputChecks::getPositive
+namespace
+{
+
+Foam::dimensionedScalar getChecked
 (
-    const dictionary& dict,
-    const word& key,
-    const dimensionSet& dims
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::dimensionSet& dims,
+    const bool allowZero
 )
 {
+    using namespace Foam;
     if (!dict.found(key))
     {
         FatalIOErrorInFunction(dict)
@@ -67,15 +72,40 @@ Foam::dimensionedScalar Foam::inputChecks::getPositive
 
     dimensionedScalar value(key, dims, dict);
 
-    if (!(value.value() > 0))
+    if (!(value.value() > 0 || (allowZero && value.value() == 0)))
     {
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' in " << dict.name()
-            << " must be > 0, found " << value.value() << nl
+            << (allowZero ? " must be >= 0" : " must be > 0") << ", found "
+            << value.value() << nl
             << exit(FatalIOError);
     }
 
     return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::dimensionedScalar Foam::inputChecks::getPositive
+(
+    const dictionary& dict,
+    const word& key,
+    const dimensionSet& dims
+)
+{
+    return getChecked(dict, key, dims, false);
+}
+
+
+Foam::dimensionedScalar Foam::inputChecks::getNonNegative
+(
+    const dictionary& dict,
+    const word& key,
+    const dimensionSet& dims
+)
+{
+    return getChecked(dict, key, dims, true);
 }
 
 

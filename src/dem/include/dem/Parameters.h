@@ -64,14 +64,14 @@ struct Parameters
 {
     ContactMaterial grainGrain;
     ContactMaterial grainWall;
-    double defaultDensity = 2600.0;               //!< used when a grain gives density <= 0
+    double defaultDensity = 2600.0;                 //!< used when a grain gives density <= 0
     std::array<double, 3> gravity{0.0, 0.0, -9.81}; //!< [m/s^2]
     //- Box: x in [lower[0], upper[0]), y in [lower[1], upper[1]); z unbounded except by walls.
     std::array<double, 2> boxLower{0.0, 0.0};
     std::array<double, 2> boxUpper{1.0, 1.0};
     std::array<bool, 2> periodic{true, true}; //!< periodic in x and y
     double timeStep = 1e-7;                   //!< DEM step [s]
-    double neighbourSkin = 0.0;               //!< Verlet skin [m]; rebuild when a grain moved skin/2
+    double neighbourSkin = 0.0; //!< Verlet skin [m]; rebuild when a grain moved skin/2
     //- Refuse timeStep > maxTimeStepFraction * sqrt(m_min / k_max) (see criticalTimeStep()).
     double maxTimeStepFraction = 0.2;
     double viscousDrag = 0.0; //!< global drag force -c v on every grain [N s/m]

@@ -18,15 +18,15 @@ namespace dem
 //- Grain state in add order; vectors are 3 per grain interleaved (x0 y0 z0 x1 ...).
 struct GrainData
 {
-    std::vector<double> position;        //!< wrapped into the periodic box at the last rebuild
-    std::vector<double> displacement;    //!< since the grain was added (unwrapped)
+    std::vector<double> position;     //!< wrapped into the periodic box at the last rebuild
+    std::vector<double> displacement; //!< since the grain was added (unwrapped)
     std::vector<double> velocity;
     std::vector<double> angularVelocity;
-    std::vector<double> force;           //!< total force of the last step (contacts, gravity, fluid)
+    std::vector<double> force; //!< total force of the last step (contacts, gravity, fluid)
     std::vector<double> torque;
     std::vector<double> radius;
     std::vector<double> mass;
-    std::vector<int> contactCount;       //!< touching grain-grain contacts (walls not counted)
+    std::vector<int> contactCount; //!< touching grain-grain contacts (walls not counted)
     std::vector<GrainFlag> flag;
 };
 

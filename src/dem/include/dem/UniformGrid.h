@@ -17,7 +17,7 @@ struct UniformGrid
 {
     std::array<double, 3> origin{0.0, 0.0, 0.0};  //!< lower corner of cell (0,0,0) [m]
     std::array<double, 3> spacing{1.0, 1.0, 1.0}; //!< cell size [m]
-    std::array<int, 3> n{1, 1, 1};               //!< cells per direction
+    std::array<int, 3> n{1, 1, 1};                //!< cells per direction
     std::array<bool, 3> periodic{true, true, false};
 
     std::size_t cellCount() const { return std::size_t(n[0]) * n[1] * n[2]; }

@@ -79,8 +79,8 @@ struct CudaExecution
         if (n <= 0)
             return 0.0;
         Vector<double> values(n);
-        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(f, n,
-                                                                  thrust::raw_pointer_cast(values.data()));
+        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(
+            f, n, thrust::raw_pointer_cast(values.data()));
         checkCuda(cudaGetLastError(), "kernel launch");
         return thrust::reduce(policy(), values.begin(), values.end(), 0.0, MaxOfDoubles());
     }
@@ -91,8 +91,8 @@ struct CudaExecution
         if (n <= 0)
             return 0.0;
         Vector<double> values(n);
-        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(f, n,
-                                                                  thrust::raw_pointer_cast(values.data()));
+        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(
+            f, n, thrust::raw_pointer_cast(values.data()));
         checkCuda(cudaGetLastError(), "kernel launch");
         return thrust::reduce(policy(), values.begin(), values.end(), 0.0);
     }

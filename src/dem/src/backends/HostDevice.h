@@ -8,7 +8,7 @@
 #define DEM_HD __host__ __device__ __forceinline__
 #define DEM_KERNEL_NS cudaKernels
 #else
-#define DEM_HD __attribute__((always_inline))
+#define DEM_HD inline __attribute__((always_inline))
 #define DEM_KERNEL_NS cpuKernels
 #endif
 

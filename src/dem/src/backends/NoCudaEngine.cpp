@@ -6,7 +6,10 @@
 namespace dem
 {
 
-int cudaDeviceCount() { return 0; }
+int cudaDeviceCount()
+{
+    return 0;
+}
 
 namespace detail
 {

@@ -27,11 +27,14 @@ struct OmpExecution
     static constexpr bool kPairMajor = true;
     static const char* name() { return "cpu"; }
     static int threads() { return omp_get_max_threads(); }
+    //- Below this many items a kernel runs on one thread: forking costs more than it saves,
+    //- and on a loaded machine a descheduled thread would stall every barrier.
+    static constexpr int kParallelThreshold = 4096;
 
     template <class F>
     static void forEach(int n, const F& f)
     {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelThreshold)
         for (int i = 0; i < n; ++i)
             f(i);
     }
@@ -50,7 +53,7 @@ struct OmpExecution
     static double maxOf(int n, const F& f)
     {
         double result = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : result)
+#pragma omp parallel for schedule(static) reduction(max : result) if (n >= kParallelThreshold)
         for (int i = 0; i < n; ++i)
             result = std::max(result, f(i));
         return result;
@@ -60,7 +63,7 @@ struct OmpExecution
     template <class F>
     static double sumOf(int n, const F& f)
     {
-        const int threads = omp_get_max_threads();
+        const int threads = n >= kParallelThreshold ? omp_get_max_threads() : 1;
         std::vector<double> partial(threads, 0.0);
 #pragma omp parallel num_threads(threads)
         {

@@ -86,7 +86,10 @@ public:
         for (int s = 0; s < nSteps; ++s)
         {
             if (needRebuild_ || moved2 > halfSkin * halfSkin)
+            {
+                Exec::forEach(n, UnpackGrains{grains_.view()});
                 rebuild();
+            }
             Exec::forEach(n, forceKernel(dt));
             wallsFinishStep(dt);
             const bool last = s + 1 == nSteps;
@@ -151,15 +154,18 @@ private:
 
     static LinearSpringContact law(const ContactMaterial& m, double dt, bool frictional = true)
     {
-        return LinearSpringContact{m.normalStiffness,   m.tangentialStiffness,
-                                   m.normalDamping,     m.tangentialDamping,
-                                   frictional ? m.friction : 0.0, dt};
+        return LinearSpringContact{
+            m.normalStiffness,   m.tangentialStiffness,         m.normalDamping,
+            m.tangentialDamping, frictional ? m.friction : 0.0, dt};
     }
 
     //- historyDt: time step of the tangential spring increment (0: evaluate without advancing).
     ForceKernel forceKernel(double historyDt)
     {
-        ForceKernel k{grains_.view(), pairs_.view(), boxView(), wallsView(),
+        ForceKernel k{grains_.view(),
+                      pairs_.view(),
+                      boxView(),
+                      wallsView(),
                       law(params_.grainGrain, historyDt),
                       law(params_.grainWall, historyDt),
                       law(params_.grainWall, historyDt, false),

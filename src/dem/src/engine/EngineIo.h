@@ -104,7 +104,8 @@ GrainData EngineImpl<Exec>::grains() const
         thrust::copy(perGrain.begin(), perGrain.end(), contacts.begin());
     }
     GrainData out;
-    auto vector3 = [&](int field, std::vector<double>& dest) {
+    auto vector3 = [&](int field, std::vector<double>& dest)
+    {
         const std::vector<double> h = grains_.hostReal(field);
         dest.resize(3 * std::size_t(n));
         for (int i = 0; i < n; ++i)
@@ -135,8 +136,7 @@ GrainData EngineImpl<Exec>::grains() const
         for (int d = 0; d < 3; ++d)
         {
             const double shift =
-                d < 2 ? image[std::size_t(d) * n + i] *
-                            (params_.boxUpper[d] - params_.boxLower[d])
+                d < 2 ? image[std::size_t(d) * n + i] * (params_.boxUpper[d] - params_.boxLower[d])
                       : 0.0;
             out.displacement[3 * u + d] = out.position[3 * u + d] + shift - origin[3 * u + d];
         }
@@ -195,19 +195,20 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
     const long cells = g.cellCount();
     EngineImpl& e = self();
     Vec<double> solid(cells, 0.0), momentum(meanVelocity ? 3 * cells : 0, 0.0), phi(cells);
-    auto depositAt = [&](double lookAhead, bool withVelocity) {
+    auto depositAt = [&](double lookAhead, bool withVelocity)
+    {
         thrust::fill(solid.begin(), solid.end(), 0.0);
         Exec::forEachScatter(
             n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
                              e.grains_.real(fRadius), g, lookAhead,
                              thrust::raw_pointer_cast(solid.data()),
                              withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr});
-        Exec::forEach(int(cells),
-                      FinishDeposit{thrust::raw_pointer_cast(solid.data()),
-                                    withVelocity ? thrust::raw_pointer_cast(momentum.data())
-                                                 : nullptr,
-                                    g.cellVolume(), thrust::raw_pointer_cast(phi.data()),
-                                    thrust::raw_pointer_cast(momentum.data())});
+        Exec::forEach(
+            int(cells),
+            FinishDeposit{thrust::raw_pointer_cast(solid.data()),
+                          withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr,
+                          g.cellVolume(), thrust::raw_pointer_cast(phi.data()),
+                          thrust::raw_pointer_cast(momentum.data())});
     };
     depositAt(0.0, meanVelocity != nullptr);
     if (porosity)

@@ -24,8 +24,8 @@ CellGridView EngineImpl<Exec>::cellGrid()
     for (int d = 0; d < 3; ++d)
     {
         const double* x = grains_.real(fPosition) + long(d) * n;
-        lower[d] = thrust::reduce(Exec::policy(), x, x + n,
-                                  std::numeric_limits<double>::infinity(), MinOp());
+        lower[d] = thrust::reduce(Exec::policy(), x, x + n, std::numeric_limits<double>::infinity(),
+                                  MinOp());
         upper[d] = thrust::reduce(Exec::policy(), x, x + n,
                                   -std::numeric_limits<double>::infinity(), MaxOp());
     }
@@ -77,7 +77,8 @@ void EngineImpl<Exec>::rebuild()
     const int cellCount = cells.n[0] * cells.n[1] * cells.n[2];
     cellKey_.resize(n);
     order_.resize(n);
-    Exec::forEach(n, CellKey{grains_.vec3(fPosition), cells, thrust::raw_pointer_cast(cellKey_.data())});
+    Exec::forEach(
+        n, CellKey{grains_.vec3(fPosition), cells, thrust::raw_pointer_cast(cellKey_.data())});
     thrust::sequence(Exec::policy(), order_.begin(), order_.end());
     thrust::stable_sort_by_key(Exec::policy(), cellKey_.begin(), cellKey_.end(), order_.begin());
     grains_.permute(order_);
@@ -111,6 +112,7 @@ void EngineImpl<Exec>::rebuild()
     pairs_.partner.resize(pairCount);
     pairs_.history.resize(3 * kHistoryVectors * pairCount);
     pairs_.reaction.resize(6 * pairCount);
+    pairs_.touching.assign(pairCount, 1); // unknown: the force kernel clears what is open
     Exec::forEach(n, FillOwnedPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
                                     thrust::raw_pointer_cast(pairs_.partner.data())});
 

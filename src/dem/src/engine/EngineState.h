@@ -61,13 +61,15 @@ SystemState EngineImpl<Exec>::exportState() const
     {
         walls.insert(walls.end(), {w.position, w.velocity, w.acceleration, w.grainForce,
                                    w.spec.velocity, w.spec.mass, w.spec.normalStress});
-        wallInts.insert(wallInts.end(),
-                        {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
-                         std::int64_t(w.spec.frictional)});
+        wallInts.insert(wallInts.end(), {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
+                                         std::int64_t(w.spec.frictional)});
     }
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
-    s.integers["counters"] = {steps_, std::int64_t(rebuilds_), grainsAtLastBuild_,
-                              std::int64_t(needRebuild_), std::int64_t(forcesStale_),
+    s.integers["counters"] = {steps_,
+                              std::int64_t(rebuilds_),
+                              grainsAtLastBuild_,
+                              std::int64_t(needRebuild_),
+                              std::int64_t(forcesStale_),
                               grains_.size()};
     return s;
 }
@@ -99,7 +101,8 @@ void EngineImpl<Exec>::importState(const SystemState& s)
             throw Error("importState: '" + name + "' has the wrong size");
         grains_.setInt(f, std::vector<int>(v.begin(), v.end()));
     }
-    auto ints = [&](const char* name) {
+    auto ints = [&](const char* name)
+    {
         const std::vector<std::int64_t>& v = entry(s.integers, name);
         return std::vector<int>(v.begin(), v.end());
     };
@@ -109,6 +112,7 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     fromHost(ints("pairs.incomingPair"), pairs_.incomingPair);
     fromHost(entry(s.reals, "pairs.history"), pairs_.history);
     pairs_.reaction.assign(6 * pairs_.partner.size(), 0.0);
+    pairs_.touching.assign(pairs_.partner.size(), 1);
     if (pairs_.history.size() != 3 * kHistoryVectors * pairs_.partner.size())
         throw Error("importState: pair history and pair list sizes disagree");
 

@@ -42,8 +42,9 @@ enum RealField
 enum IntField
 {
     fFlag,
-    fId, //!< add-order index of the grain
-    fImage, //!< periodic images crossed in x and y
+    fId,           //!< add-order index of the grain
+    fImage,        //!< periodic images crossed in x and y
+    fWallContacts, //!< bit w set: the grain touched wall w in the last force evaluation
     kIntFieldCount
 };
 
@@ -55,18 +56,27 @@ struct FieldInfo
 
 inline const FieldInfo& realFieldInfo(int f)
 {
-    static const FieldInfo table[kRealFieldCount] = {
-        {"position", 3},       {"velocity", 3},     {"angularVelocity", 3},
-        {"force", 3},          {"torque", 3},       {"positionAtBuild", 3},
-        {"origin", 3},         {"prescribedVelocity", 2}, {"orientation", 4},
-        {"radius", 1},         {"inverseMass", 1},  {"inverseInertia", 1},
-        {"wallHistory", 3 * kMaxWalls}, {"wallForce", kMaxWalls}};
+    static const FieldInfo table[kRealFieldCount] = {{"position", 3},
+                                                     {"velocity", 3},
+                                                     {"angularVelocity", 3},
+                                                     {"force", 3},
+                                                     {"torque", 3},
+                                                     {"positionAtBuild", 3},
+                                                     {"origin", 3},
+                                                     {"prescribedVelocity", 2},
+                                                     {"orientation", 4},
+                                                     {"radius", 1},
+                                                     {"inverseMass", 1},
+                                                     {"inverseInertia", 1},
+                                                     {"wallHistory", 3 * kMaxWalls},
+                                                     {"wallForce", kMaxWalls}};
     return table[f];
 }
 
 inline const FieldInfo& intFieldInfo(int f)
 {
-    static const FieldInfo table[kIntFieldCount] = {{"flag", 1}, {"id", 1}, {"image", 2}};
+    static const FieldInfo table[kIntFieldCount] = {
+        {"flag", 1}, {"id", 1}, {"image", 2}, {"wallContacts", 1}};
     return table[f];
 }
 
@@ -100,13 +110,18 @@ public:
         g.wallHistory = real(fWallHistory);
         g.wallForce = real(fWallForce);
         g.flag = integer(fFlag);
+        g.wallContacts = integer(fWallContacts);
         if (packedPositionRadius_.size() != 4 * std::size_t(n_))
         {
             packedPositionRadius_.resize(4 * std::size_t(n_));
             packedVelocities_.resize(8 * std::size_t(n_));
+            packedPositionAtBuild_.resize(4 * std::size_t(n_));
+            packedForce_.resize(8 * std::size_t(n_));
         }
         g.packedPositionRadius = thrust::raw_pointer_cast(packedPositionRadius_.data());
         g.packedVelocities = thrust::raw_pointer_cast(packedVelocities_.data());
+        g.packedPositionAtBuild = thrust::raw_pointer_cast(packedPositionAtBuild_.data());
+        g.packedForce = thrust::raw_pointer_cast(packedForce_.data());
         return g;
     }
 
@@ -168,7 +183,8 @@ private:
         return out;
     }
     template <class T, std::size_t F, class Info>
-    void permuteAll(std::array<Vec<T>, F>& fields, Info info, Vec<T>& scratch, const Vec<int>& order)
+    void permuteAll(std::array<Vec<T>, F>& fields, Info info, Vec<T>& scratch,
+                    const Vec<int>& order)
     {
         for (std::size_t f = 0; f < F; ++f)
         {
@@ -184,7 +200,7 @@ private:
     std::array<Vec<double>, kRealFieldCount> reals_;
     std::array<Vec<int>, kIntFieldCount> ints_;
     Vec<double> scratchReal_;
-    Vec<double> packedPositionRadius_, packedVelocities_; // derived, see GrainView::pack
+    Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_, packedForce_;
     Vec<int> scratchInt_;
 };
 

@@ -19,6 +19,7 @@ struct PairStorage
 
     Vec<int> start = Vec<int>(1, 0), partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
+    Vec<unsigned char> touching; //!< saves clearing history and reactions of open pairs
 
     long count() const { return long(partner.size()); }
 
@@ -33,6 +34,7 @@ struct PairStorage
         v.partner = thrust::raw_pointer_cast(partner.data());
         v.history = thrust::raw_pointer_cast(history.data());
         v.reaction = thrust::raw_pointer_cast(reaction.data());
+        v.touching = thrust::raw_pointer_cast(touching.data());
         v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
         v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
         return v;
@@ -46,6 +48,7 @@ struct PairStorage
         incomingPair.swap(other.incomingPair);
         history.swap(other.history);
         reaction.swap(other.reaction);
+        touching.swap(other.touching);
     }
 };
 

@@ -19,9 +19,9 @@ struct DepositGrains
     Vec3Array position, velocity;
     const double* radius;
     GridView grid;
-    double lookAhead;   //!< deposit at x + lookAhead * v (0: current position)
-    double* solid;      //!< per cell
-    double* momentum;   //!< 3 per cell interleaved, or nullptr
+    double lookAhead; //!< deposit at x + lookAhead * v (0: current position)
+    double* solid;    //!< per cell
+    double* momentum; //!< 3 per cell interleaved, or nullptr
 
     DEM_HD void operator()(int i) const
     {

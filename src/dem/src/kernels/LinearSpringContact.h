@@ -60,7 +60,8 @@ struct LinearSpringContact
         }
         xi += tangentialVelocity * timeStep;
 
-        Vector3d tangentialForce = -tangentialStiffness * xi - tangentialDamping * tangentialVelocity;
+        Vector3d tangentialForce =
+            -tangentialStiffness * xi - tangentialDamping * tangentialVelocity;
         const double limit = friction * std::fabs(normalMagnitude);
         const double magnitude2 = tangentialForce.squaredNorm();
         if (magnitude2 > limit * limit)
@@ -83,10 +84,10 @@ struct ContactLoads
 //- Geometry and kinematics of two touching spheres (or sphere and wall: radiusJ = 0,
 //- omegaJ = 0) and the law's loads. Lever arms reach the middle of the overlap.
 DEM_HD ContactLoads evaluateContact(const LinearSpringContact& law, const Vector3d& n,
-                                           double overlap, double radiusI, double radiusJ,
-                                           const Vector3d& velocityI, const Vector3d& velocityJ,
-                                           const Vector3d& omegaI, const Vector3d& omegaJ,
-                                           Vector3d& history)
+                                    double overlap, double radiusI, double radiusJ,
+                                    const Vector3d& velocityI, const Vector3d& velocityJ,
+                                    const Vector3d& omegaI, const Vector3d& omegaJ,
+                                    Vector3d& history)
 {
     const double leverI = radiusI - 0.5 * overlap;
     const double leverJ = radiusJ - 0.5 * overlap;

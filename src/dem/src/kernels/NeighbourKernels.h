@@ -125,13 +125,16 @@ struct NeighbourSearch
     {
         const Vector3d x = position(i);
         const double ri = radius[i];
-        cells.forEachNearbyGrain(x, [&](int j) {
-            if (higher ? j <= i : j >= i)
-                return;
-            const double cutoff = (ri + radius[j]) + skin;
-            if (box.separation(x, position(j)).squaredNorm() < cutoff * cutoff)
-                visit(j);
-        });
+        cells.forEachNearbyGrain(x,
+                                 [&](int j)
+                                 {
+                                     if (higher ? j <= i : j >= i)
+                                         return;
+                                     const double cutoff = (ri + radius[j]) + skin;
+                                     if (box.separation(x, position(j)).squaredNorm() <
+                                         cutoff * cutoff)
+                                         visit(j);
+                                 });
     }
 };
 
@@ -174,13 +177,15 @@ struct FillIncomingPairs
     DEM_HD void operator()(int j) const
     {
         int q = incomingStart[j];
-        search.forEachNeighbour(j, false, [&](int i) {
-            int found = -1;
-            for (int p = start[i]; p < start[i + 1]; ++p)
-                if (partner[p] == j)
-                    found = p;
-            incomingPair[q++] = found;
-        });
+        search.forEachNeighbour(j, false,
+                                [&](int i)
+                                {
+                                    int found = -1;
+                                    for (int p = start[i]; p < start[i + 1]; ++p)
+                                        if (partner[p] == j)
+                                            found = p;
+                                    incomingPair[q++] = found;
+                                });
     }
 };
 
@@ -213,7 +218,8 @@ struct TransferHistory
             double* h = pairs.historyOf(p);
             const double* oldH = found < 0 ? nullptr : oldPairs.historyOf(found);
             for (int c = 0; c < 3 * kHistoryVectors; ++c)
-                h[c * pairs.componentStride] = oldH ? sign * oldH[c * oldPairs.componentStride] : 0.0;
+                h[c * pairs.componentStride] =
+                    oldH ? sign * oldH[c * oldPairs.componentStride] : 0.0;
         }
     }
 

@@ -37,7 +37,7 @@ struct GridView
         if (k < 0)
             k = -k - 1; // mirror about the lower side
         else if (k >= cells)
-            k = 2 * cells - 1 - k; // mirror about the upper side
+            k = 2 * cells - 1 - k;                       // mirror about the upper side
         return k < 0 ? 0 : (k >= cells ? cells - 1 : k); // far outside: nearest cell
     }
 };
@@ -66,7 +66,8 @@ DEM_HD TrilinearStencil trilinearStencil(const GridView& grid, const Vector3d& x
     for (int c = 0; c < 8; ++c)
     {
         const int a = c & 1, b = (c >> 1) & 1, e = (c >> 2) & 1;
-        stencil.cell[c] = index[0][a] + long(grid.n[0]) * (index[1][b] + long(grid.n[1]) * index[2][e]);
+        stencil.cell[c] =
+            index[0][a] + long(grid.n[0]) * (index[1][b] + long(grid.n[1]) * index[2][e]);
         stencil.weight[c] = w[0][a] * w[1][b] * w[2][e];
     }
     return stencil;
@@ -78,8 +79,8 @@ DEM_HD Vector3d interpolateVector(const GridView& grid, const double* field, con
     const TrilinearStencil s = trilinearStencil(grid, x);
     Vector3d value = Vector3d::Zero();
     for (int c = 0; c < 8; ++c)
-        value += s.weight[c] * Vector3d(field[3 * s.cell[c]], field[3 * s.cell[c] + 1],
-                                        field[3 * s.cell[c] + 2]);
+        value += s.weight[c] *
+                 Vector3d(field[3 * s.cell[c]], field[3 * s.cell[c] + 1], field[3 * s.cell[c] + 2]);
     return value;
 }
 

@@ -47,10 +47,14 @@ struct GrainView
     double* wallHistory = nullptr; //!< 3 * kMaxWalls components
     double* wallForce = nullptr;   //!< kMaxWalls components: z-force of grain on wall
     int* flag = nullptr;
-    //- Packed copies read per neighbour (one or two cache lines instead of ten), refreshed
-    //- by every kick-drift: (x, y, z, r) and (vx, vy, vz, 0, wx, wy, wz, 0) per grain.
+    int* wallContacts = nullptr; //!< bit w: touching wall w (history and force to clear)
+    //- Packed copies (one or two cache lines per grain instead of ten arrays), the current
+    //- state within a step() call: (x, y, z, r), (vx, vy, vz, 1/m, wx, wy, wz, 1/I) and
+    //- (x, y, z, 0) at the last rebuild.
     double* packedPositionRadius = nullptr;
     double* packedVelocities = nullptr;
+    double* packedPositionAtBuild = nullptr;
+    double* packedForce = nullptr; //!< (fx, fy, fz, 0, tx, ty, tz, 0) of the owner loop
 
     DEM_HD void pack(int i) const
     {
@@ -63,7 +67,8 @@ struct GrainView
             vw[4 + c] = angularVelocity.data[i + c * angularVelocity.stride];
         }
         xr[3] = radius[i];
-        vw[3] = vw[7] = 0.0;
+        vw[3] = inverseMass[i];
+        vw[7] = inverseInertia[i];
     }
     DEM_HD Vector3d packedPosition(int i) const
     {
@@ -90,10 +95,11 @@ struct PairView
     //- Layout of per-pair vectors: component c of pair p at p * pairStride + c * componentStride
     //- (pair-major on the CPU for cache lines, component-major on the GPU for coalescing).
     long historyPairStride = 0, reactionPairStride = 0, componentStride = 0;
-    const int* start = nullptr;   //!< N + 1: pairs of owner i are [start[i], start[i+1])
-    const int* partner = nullptr; //!< the other grain, > owner
-    double* history = nullptr;    //!< 3 * kHistoryVectors components, stride count
-    double* reaction = nullptr;   //!< 6 components: force and torque on the partner
+    const int* start = nullptr;         //!< N + 1: pairs of owner i are [start[i], start[i+1])
+    const int* partner = nullptr;       //!< the other grain, > owner
+    double* history = nullptr;          //!< 3 * kHistoryVectors components, stride count
+    double* reaction = nullptr;         //!< 6 components: force and torque on the partner
+    unsigned char* touching = nullptr;  //!< 1: in contact at the last force evaluation
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
 

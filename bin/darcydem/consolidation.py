@@ -1,0 +1,260 @@
+"""Coupled consolidation of a saturated grain packing against Terzaghi
+(VALIDATION.md section 3), the procedure of Catalano et al. (2014):
+
+  1. prepare   demFoam: grains settle under gravity and a stress-controlled
+               lid at sigma0 (viscous drag to come to rest);
+  2. oedometer demFoam: dry load step sigma0 -> sigma0 + dsigma on the same
+               packing gives the constrained modulus E_oed;
+  3. permeability  darcyDemFoam with every grain fixed and a pressure drop
+               over the packing gives its permeability k from the flux;
+  4. consolidation darcyDemFoam: the same load step, saturated, drained at
+               the top, closed at the base; settlement and base pressure
+               against Terzaghi with c_v from E_oed and k (the load is ramped
+               over RAMP seconds and the theory superposed over the ramp;
+               a compressible fluid takes a share U0 of the settlement at once);
+  5. the same with half the fluid (coupling) step.
+
+Every stage is a case directory under <study>/stages/<stage>, made from the
+template case in <study> (0/, constant/, system/).
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+from darcydem.analytic import (consolidation_coefficient, instantaneous_settlement,
+                               ramp_loaded_consolidation, undrained_pressure)
+from darcydem.case import Case
+from darcydem.foamfiles import read_internal_field, read_probes, read_scalar_entry
+
+SIGMA0 = 2e4        # prepared stress on the lid [Pa]
+LOAD = 1e4          # load step [Pa]
+DRAG = 0.01         # viscous drag while preparing [N s/m]
+# Background damping of the load steps (dry and wet) [N s/m]: damps the
+# lid-on-packing vibration that a load step excites (period ~6 ms) within a
+# few periods, while its force on the consolidation motion (< 6e-3 m/s)
+# stays below 1 % of the load per grain (dsigma d^2 ~ 0.8 N). The same in
+# the oedometer and the consolidation, so that both load the packing alike.
+QUASI_STATIC_DRAG = 0.5
+# The load is applied as a linear ramp over this time [s] (about three
+# periods of the lid-on-packing vibration, ~6 ms), so that the load step
+# excites little vibration; the theory superposes Terzaghi over the ramp.
+RAMP = 0.02
+LOAD_HISTORY = "table ((0 %g) (%g %g))" % (SIGMA0, RAMP, SIGMA0 + LOAD)
+
+
+class Study:
+    def __init__(self, study_dir):
+        self.dir = os.path.abspath(study_dir)
+        self.stages = os.path.join(self.dir, "stages")
+        self.template_root = os.path.dirname(self.dir)
+        self.template = os.path.basename(self.dir)
+        os.makedirs(self.stages, exist_ok=True)
+        block = os.path.join(self.dir, "system", "blockMeshDict")
+        self.L = read_scalar_entry(block, "L")
+        self.dz = read_scalar_entry(block, "H") / read_scalar_entry(block, "nz")
+        props = os.path.join(self.dir, "constant", "darcyProperties")
+        self.mu = read_scalar_entry(props, "mu")
+        self.beta = read_scalar_entry(props, "beta")
+
+    def stage(self, name, app, state_from=None):
+        c = Case(self.template, name, template_root=self.template_root, run_root=self.stages)
+        c.set("system/controlDict", "application", app)
+        c.run("blockMesh")
+        if state_from is not None:
+            shutil.copy(state_from, c.file("0/demState"))
+        return c
+
+    @staticmethod
+    def last_state(case):
+        t, name = case.times()[-1]
+        return case.file(os.path.join(name, "demState"))
+
+    @staticmethod
+    def diagnostics(case):
+        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
+                       comments="#")
+        return {"t": d[:, 0], "wall": d[:, 5], "kinetic": d[:, 9], "pBaseMax": d[:, 8]}
+
+    # 1 ------------------------------------------------------------------
+    def prepare(self, settle_time=0.5, load_time=0.3):
+        """Settle a loose lattice under gravity (lid out of the way), then
+        start afresh from the settled grains with the lid just above them
+        at sigma0, so that the lid does not fall onto the packing."""
+        a = self.stage("settle", "demFoam")
+        subprocess.run([os.path.join(os.path.dirname(os.path.dirname(__file__)), "makeGrains"),
+                        "--box", str(self.L), str(self.L), "--z", "0", "0.30",
+                        "--radius", "0.004", "0.005", "--gap", "0.05", "--seed", "7",
+                        "-o", a.file("0/grains")], check=True, stdout=subprocess.DEVNULL)
+        self.dry(a, settle_time, drag=DRAG)
+        a.set("constant/demProperties", "walls/top/mode", "fixed")
+        a.run("demFoam")
+        grains = np.loadtxt(a.file(os.path.join(a.times()[-1][1], "grains")))
+
+        b = self.stage("prepare", "demFoam")
+        shutil.copy(a.file(os.path.join(a.times()[-1][1], "grains")), b.file("0/grains"))
+        self.dry(b, load_time, drag=DRAG)
+        lid = float(np.max(grains[:, 2] + grains[:, 3])) + 0.001
+        b.set("constant/demProperties", "walls/top/position", lid)
+        b.set("constant/demProperties", "walls/top/normalStress", SIGMA0)
+        b.run("demFoam")
+        d = self.diagnostics(b)
+        self.prepared = self.last_state(b)
+        return {"grains": len(grains), "lidHeight": d["wall"][-1],
+                "kineticEnergyEnd": d["kinetic"][-1]}
+
+    @staticmethod
+    def dry(case, end, drag=0.0):
+        """Make a stage a dry demFoam run of the given length."""
+        case.set("constant/demProperties", "viscousDrag", drag)
+        case.set("system/controlDict", "endTime", end)
+        case.set("system/controlDict", "writeInterval", end)
+        os.remove(case.file("constant/darcyProperties"))
+        os.remove(case.file("0/p"))
+
+    # 2 ------------------------------------------------------------------
+    def oedometer(self, end=0.08):
+        c = self.stage("oedometer", "demFoam", self.prepared)
+        self.dry(c, end, drag=QUASI_STATIC_DRAG)
+        c.set("constant/demProperties", "walls/top/normalStress", LOAD_HISTORY)
+        c.run("demFoam")
+        d = self.diagnostics(c)
+        h0 = self.height0 = d["wall"][0]  # lid height above the base at the first step
+        tail = d["wall"][d["t"] > 0.75 * end]
+        settle = h0 - tail.mean()  # the lid still rocks a little on the packing
+        self.E_oed = LOAD * h0 / settle
+        return {"E_oed": self.E_oed, "settlement": settle, "height": h0,
+                "tailDrift": float(tail.max() - tail.min())}
+
+    # 3 ------------------------------------------------------------------
+    def permeability(self, dp=1000.0):
+        c = self.stage("permeability", "darcyDemFoam", self.prepared)
+        c.set("constant/demProperties", "grainFlags", "{ all { flag fixed; } }")
+        c.set("system/fvSchemes", "ddtSchemes/default", "Euler")
+        # steady flow does not depend on the storage: a stiff fluid gets there
+        # within the few steps of this stage
+        c.set("constant/darcyProperties", "beta", 1e-12)
+        c.set("system/controlDict", "endTime", 0.002)
+        c.set("system/controlDict", "writeInterval", 0.002)
+        c.set("system/controlDict", "writeFormat", "ascii")
+        c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % dp)
+        c.run("darcyDemFoam")
+        name = c.times()[-1][1]
+        C = c.cell_centres()
+        q = read_internal_field(c.file(os.path.join(name, "qDarcy")))
+        phi = read_internal_field(c.file(os.path.join(name, "porosity")))
+        wall = self.diagnostics(c)["wall"][-1]
+        k_wall = int(np.floor(wall / self.dz))
+        drained_at = (k_wall + 0.5) * self.dz       # first cell with p fixed
+        inside = C[:, 2] < (k_wall - 1) * self.dz  # cells below the lid's cell and its neighbour
+        q_mean = q[inside, 2].mean()
+        self.k = self.mu * q_mean * drained_at / dp
+        self.drainage_length = drained_at
+        self.porosity = float(phi[inside].mean())
+        return {"k": self.k, "drainageLength": drained_at, "porosity": self.porosity,
+                "fluxSpread": float(q[inside, 2].std() / q_mean)}
+
+    # 4, 5 ---------------------------------------------------------------
+    def consolidate(self, name, dt, end):
+        c = self.stage(name, "darcyDemFoam", self.prepared)
+        c.set("constant/demProperties", "walls/top/normalStress", LOAD_HISTORY)
+        c.set("constant/demProperties", "viscousDrag", QUASI_STATIC_DRAG)
+        c.set("system/controlDict", "deltaT", dt)
+        c.set("system/controlDict", "endTime", end)
+        c.set("system/controlDict", "writeInterval", end)
+        c.set("system/controlDict", "functions/baseProbe/probeLocations",
+              "((%g %g %g))" % (self.L / 4, self.L / 4, self.dz / 2))
+        c.run("darcyDemFoam")
+        d = self.diagnostics(c)
+        t, p = read_probes(c.file("postProcessing/baseProbe/0/p"))
+        return d["t"], d["wall"], t, p
+
+    def run(self):
+        results = {"sigma0": SIGMA0, "load": LOAD}
+        results["prepare"] = self.prepare()
+        results["oedometer"] = self.oedometer()
+        results["permeability"] = self.permeability()
+        cv = consolidation_coefficient(self.k, self.mu, self.E_oed, self.porosity, self.beta)
+        H = self.drainage_length
+        end = 1.5 * H**2 / cv
+        p0 = undrained_pressure(LOAD, self.porosity, self.beta, self.E_oed)
+        s_inf = LOAD * self.height0 / self.E_oed
+        results["theory"] = {"c_v": cv, "H_dr": H, "t(Tv=1)": H**2 / cv,
+                             "p0_undrained": p0, "finalSettlement": s_inf}
+        curves = {}
+        for name, dt in (("consolidation", 1e-4), ("consolidationHalfStep", 5e-5)):
+            tw, wall, tp, p = self.consolidate(name, dt, end)
+            Tv = cv * tw / H**2
+            U = (wall[0] - wall) / s_inf
+            Tp = cv * tp / H**2
+            curves[name] = {"Tv": Tv, "U": U, "Tp": Tp, "p": p[:, 0] / p0}
+        ref = curves["consolidation"]
+        window = (ref["Tv"] >= 0.05) & (ref["Tv"] <= 1.5)
+        U0 = self.U0 = instantaneous_settlement(self.porosity, self.beta, self.E_oed)
+        self.Tramp = cv * RAMP / H**2
+        results["theory"]["instantaneousSettlement"] = U0
+        results["theory"]["Tv_ramp"] = self.Tramp
+        U_exact, _ = ramp_loaded_consolidation(ref["Tv"], self.Tramp, U0)
+        misfit = ref["U"] - U_exact
+        half = curves["consolidationHalfStep"]
+        U_half = np.interp(ref["Tv"], half["Tv"], half["U"])
+        pwin = (ref["Tp"] >= 0.05) & (ref["Tp"] <= 1.5)
+        _, p_exact = ramp_loaded_consolidation(ref["Tp"], self.Tramp, U0)
+        results["comparison"] = {
+            "U_rmsError(0.05<=Tv<=1.5)": float(np.sqrt(np.mean(misfit[window] ** 2))),
+            "U_maxError(0.05<=Tv<=1.5)": float(np.max(np.abs(misfit[window]))),
+            "U_at_Tv1": float(np.interp(1.0, ref["Tv"], ref["U"])),
+            "basePressure_rmsError": float(np.sqrt(np.mean((ref["p"][pwin] - p_exact[pwin]) ** 2))),
+            "basePressureMax/p0": float(ref["p"].max()),
+            "basePressureEnd/p0": float(ref["p"][-1]),
+            "halfStepMaxChange": float(np.max(np.abs(U_half[window] - ref["U"][window]))),
+        }
+        self.curves = curves
+        self.results = results
+        with open(os.path.join(self.dir, "results.json"), "w") as f:
+            json.dump(results, f, indent=2)
+        return results
+
+    def plot(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.5))
+        Tv = np.linspace(0, 1.5, 300)
+        U_th, p_th = ramp_loaded_consolidation(Tv, self.Tramp, self.U0)
+        a1.plot(Tv, U_th, "k-", lw=2, label="Terzaghi (ramp load, U0 at once)")
+        a2.plot(Tv, p_th, "k-", lw=2, label="Terzaghi, base")
+        for name, style in (("consolidation", "-"), ("consolidationHalfStep", "--")):
+            c = self.curves[name]
+            lab = "darcyDemFoam" + (", half coupling step" if "Half" in name else "")
+            a1.plot(c["Tv"], c["U"], style, label=lab)
+            a2.plot(c["Tp"], c["p"], style, label=lab)
+        cmp_ = self.results["comparison"]
+        a1.set_xlabel("T_v = c_v t / H_dr^2")
+        a1.set_ylabel("settlement / final settlement U")
+        a1.set_title("Settlement; rms misfit %.3f" % cmp_["U_rmsError(0.05<=Tv<=1.5)"])
+        a1.set_xlim(0, 1.5)
+        a1.legend()
+        a2.set_xlabel("T_v")
+        a2.set_ylabel("excess pore pressure at the base / p0")
+        a2.set_title("Base pressure; p0 = dsigma/((1-phi) + phi beta E)")
+        a2.set_xlim(0, 1.5)
+        a2.legend()
+        fig.tight_layout()
+        out = os.path.join(self.dir, "consolidation.png")
+        fig.savefig(out, dpi=120)
+        return out
+
+
+def main(argv):
+    if len(argv) != 1:
+        sys.exit("usage: consolidationStudy STUDY_DIR")
+    study = Study(argv[0])
+    results = study.run()
+    out = study.plot()
+    print(json.dumps(results, indent=2))
+    print(f"consolidationStudy: wrote {out} and results.json")

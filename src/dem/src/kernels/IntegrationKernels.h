@@ -1,0 +1,151 @@
+// IntegrationKernels.h
+// Velocity-Verlet integration kernels, written once for both backends:
+//   KickDrift   first half kick and drift of a step() call (from the SoA fields)
+//   GatherKick  adds the reactions of the pairs a grain is partner of (fixed order: results do
+//               not depend on the thread count), the second half kick and, within a step()
+//               call, the next step's kick and drift in the same pass
+// Within a step() call the packed per-grain copies (GrainView::pack) are the current state,
+// so a pass touches three cache lines per grain instead of ~25 arrays; the SoA fields are
+// brought up to date at the end of the call and before a neighbour rebuild.
+#pragma once
+
+#include "kernels/Views.h"
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3;
+
+//- Half kick of grain i's (v, omega), respecting its flag.
+DEM_HD void kick(const GrainView& g, int i, int flag, double halfDt, double inverseMass,
+                 double inverseInertia, const Vector3d& force, const Vector3d& torque, Vector3d& v,
+                 Vector3d& omega)
+{
+    if (flag == kFlagFixed)
+    {
+        v.setZero();
+        omega.setZero();
+        return;
+    }
+    v = v + (halfDt * inverseMass) * force;
+    if (flag == kFlagPrescribed)
+    {
+        v.x() = g.prescribedVelocity[i];
+        v.y() = g.prescribedVelocity[i + g.n];
+    }
+    if (flag == kFlagFree)
+        omega = omega + (halfDt * inverseInertia) * torque;
+    else
+        omega.setZero();
+}
+
+//- Packed copy of the rebuild positions, for the displacement check.
+DEM_HD void packBuildPosition(const GrainView& g, int i)
+{
+    double* b = g.packedPositionAtBuild + 4L * i;
+    for (int c = 0; c < 3; ++c)
+        b[c] = g.positionAtBuild.data[i + c * g.positionAtBuild.stride];
+    b[3] = 0.0;
+}
+
+//- First kick and drift of a step() call; returns |x - x_build|^2.
+struct KickDrift
+{
+    GrainView g;
+    double dt;
+
+    DEM_HD double operator()(int i) const
+    {
+        Vector3d v = g.velocity(i), omega = g.angularVelocity(i);
+        kick(g, i, g.flag[i], 0.5 * dt, g.inverseMass[i], g.inverseInertia[i], g.force(i),
+             g.torque(i), v, omega);
+        g.velocity.store(i, v);
+        g.angularVelocity.store(i, omega);
+        const Vector3d x = g.position(i) + dt * v;
+        g.position.store(i, x);
+        g.pack(i);
+        packBuildPosition(g, i);
+        return (x - g.positionAtBuild(i)).squaredNorm();
+    }
+};
+
+//- Refresh all packed copies from the SoA fields (after adding, importing or re-sorting).
+struct PackGrains
+{
+    GrainView g;
+    DEM_HD void operator()(int i) const
+    {
+        g.pack(i);
+        packBuildPosition(g, i);
+    }
+};
+
+//- Bring the SoA position and velocities up to date from the packed copies.
+struct UnpackGrains
+{
+    GrainView g;
+    DEM_HD void operator()(int i) const
+    {
+        g.position.store(i, g.packedPosition(i));
+        g.velocity.store(i, g.packedVelocity(i));
+        g.angularVelocity.store(i, g.packedAngularVelocity(i));
+    }
+};
+
+struct GatherKick
+{
+    GrainView g;
+    PairView pairs;
+    double dt;
+    bool driftNext; //!< false: last step of the call, update the SoA fields
+
+    DEM_HD double operator()(int j) const
+    {
+        const double* partial = g.packedForce + 8L * j;
+        Vector3d force(partial[0], partial[1], partial[2]),
+            torque(partial[4], partial[5], partial[6]);
+        const long cs = pairs.componentStride;
+        for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
+        {
+            const int p = pairs.incomingPair[q];
+            if (p < 0 || !pairs.touching[p]) // p < 0 cannot happen: the search is symmetric
+                continue;
+            const double* reaction = pairs.reactionOf(p);
+            force += Vector3d(reaction[0], reaction[cs], reaction[2 * cs]);
+            torque += Vector3d(reaction[3 * cs], reaction[4 * cs], reaction[5 * cs]);
+        }
+        const int flag = g.flag[j];
+        double* vw = g.packedVelocities + 8L * j;
+        double* xr = g.packedPositionRadius + 4L * j;
+        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        if (!driftNext)
+        {
+            g.force.store(j, force);
+            g.torque.store(j, torque);
+            g.velocity.store(j, v);
+            g.angularVelocity.store(j, omega);
+            g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
+            g.pack(j);
+            return 0.0;
+        }
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = x[c];
+            vw[c] = v[c];
+            vw[4 + c] = omega[c];
+        }
+        const double* b = g.packedPositionAtBuild + 4L * j;
+        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
+    }
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem

@@ -1,0 +1,105 @@
+// ErrorTest.cpp
+// Refusals are exceptions with clear messages: contact-storage overflow (never a silent drop),
+// a time step above the critical fraction, invalid parameters, an unavailable CUDA backend.
+#include "TestSupport.h"
+
+using namespace demTest;
+
+namespace
+{
+
+class Errors : public BackendTest
+{
+protected:
+    std::vector<dem::GrainInit> denseLattice(int n, double spacing) const
+    {
+        std::vector<dem::GrainInit> out;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                for (int k = 0; k < n; ++k)
+                {
+                    dem::GrainInit g;
+                    g.position = {(i + 0.5) * spacing, (j + 0.5) * spacing, (k + 0.5) * spacing};
+                    out.push_back(g);
+                }
+        return out;
+    }
+};
+
+std::string messageOf(const std::function<void()>& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const dem::Error& e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_P(Errors, ContactStorageOverflowIsReported)
+{
+    dem::Parameters p = parameters();
+    p.boxUpper = {0.2, 0.2};
+    p.maxPairsPerGrain = 2;
+    dem::System limited(p);
+    limited.addGrains(denseLattice(10, 0.0199)); // 6 touching neighbours each
+    const std::string message = messageOf([&] { limited.step(1); });
+    std::printf("  %s\n", message.c_str());
+    EXPECT_NE(message.find("contact storage overflow"), std::string::npos) << message;
+    EXPECT_NE(message.find("maxPairsPerGrain"), std::string::npos) << message;
+
+    p.maxPairsPerGrain = 0; // grow: every contact is kept
+    dem::System growing(p);
+    growing.addGrains(denseLattice(10, 0.0199));
+    growing.step(1);
+    EXPECT_EQ(growing.contactCount(), 3u * 10 * 10 * 9); // lattice neighbours, none across the seam
+}
+
+TEST_P(Errors, TimeStepAboveCriticalIsRefused)
+{
+    dem::Parameters p = parameters();
+    p.timeStep = 1e-3;
+    dem::System s(p);
+    s.addGrain(dem::GrainInit());
+    const std::string message = messageOf([&] { s.step(1); });
+    std::printf("  %s\n", message.c_str());
+    EXPECT_NE(message.find("timeStep"), std::string::npos) << message;
+    EXPECT_NE(message.find("critical"), std::string::npos) << message;
+    s.setTimeStep(0.1 * s.criticalTimeStep());
+    EXPECT_NO_THROW(s.step(1));
+}
+
+TEST_P(Errors, InvalidParametersAreNamed)
+{
+    dem::Parameters p = parameters();
+    p.grainGrain.friction = -1;
+    const std::string message = messageOf([&] { dem::System s(p); });
+    EXPECT_NE(message.find("grainGrain.friction"), std::string::npos) << message;
+    dem::System s(parameters());
+    dem::WallSpec w;
+    w.mode = dem::WallSpec::Mode::stress;
+    EXPECT_NE(messageOf([&] { s.addWall(w); }).find("wall.mass"), std::string::npos);
+    dem::UniformGrid bad;
+    bad.n = {0, 1, 1};
+    EXPECT_NE(messageOf([&] { s.deposit(bad, 0, nullptr, nullptr, nullptr); }).find("grid"),
+              std::string::npos);
+}
+
+DEM_TEST_ON_ALL_BACKENDS(Errors);
+
+TEST(Backends, CudaWithoutDeviceFailsClearly)
+{
+    if (dem::cudaDeviceCount() > 0)
+        GTEST_SKIP() << "a CUDA device answers";
+    dem::Parameters p;
+    p.backend = dem::Backend::cuda;
+    const std::string message = messageOf([&] { dem::System s(p); });
+    EXPECT_NE(message.find("cuda"), std::string::npos) << message;
+    p.backend = dem::Backend::automatic;
+    EXPECT_EQ(dem::System(p).backendName(), "cpu");
+}
