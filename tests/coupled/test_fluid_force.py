@@ -18,7 +18,8 @@ H = 0.4
 
 def vtp_array(path, name):
     text = open(path).read()
-    m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
+    # the values are the text before the first child element (VTK adds InformationKey ranges)
+    m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)' % name, text, re.S)
     return np.array([float(v) for v in m.group(1).split()])
 
 

@@ -113,6 +113,12 @@ void System::setWallMotion(int wall, const WallSpec& spec)
     impl_->engine->setWallMotion(wall, spec);
 }
 
+void System::setWallStress(int wall, double normalStress)
+{
+    require(std::isfinite(normalStress), "wall.normalStress", normalStress, "finite");
+    impl_->engine->setWallStress(wall, normalStress);
+}
+
 void System::setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx, double vy)
 {
     impl_->engine->setGrainFlags(indices, flag, vx, vy);

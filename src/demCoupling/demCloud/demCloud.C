@@ -151,7 +151,7 @@ void Foam::demCloud::updateWallStress(const scalar t)
 {
     forAll(wallStress_, w)
     {
-        if (wallStress_.set(w) && !wallStress_[w].constant())
+        if (wallStress_.set(w))
         {
             system_->setWallStress(w, wallStress_[w].value(t));
         }

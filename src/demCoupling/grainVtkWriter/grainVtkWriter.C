@@ -77,7 +77,7 @@ void Foam::grainVtkWriter::writeVtp
     addArray(data, "angularVelocity", g.angularVelocity, 3);
     addArray(data, "displacement", g.displacement, 3);
     addArray(data, "force", g.force, 3);
-    //TMP addArray(data, "fluidForce", g.fluidForce, 3);
+    addArray(data, "fluidForce", g.fluidForce, 3);
 
     vtkNew<vtkIntArray> contacts;
     contacts->SetName("contactCount");

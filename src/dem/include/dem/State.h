@@ -23,6 +23,8 @@ struct GrainData
     std::vector<double> velocity;
     std::vector<double> angularVelocity;
     std::vector<double> force; //!< total force of the last step (contacts, gravity, fluid)
+    //- -V grad p - rho_f V g at the grain's position with the current fluid (0 without fluid)
+    std::vector<double> fluidForce;
     std::vector<double> torque;
     std::vector<double> radius;
     std::vector<double> mass;

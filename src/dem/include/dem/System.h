@@ -45,6 +45,9 @@ public:
     int addWall(const WallSpec& wall);
     //- Change a wall's mode/velocity/mass/stress/friction; its current position is kept.
     void setWallMotion(int wall, const WallSpec& spec);
+    //- Change the normal stress of a stress-controlled wall (load ramps); its position,
+    //- velocity and acceleration are kept, so the wall's motion stays continuous.
+    void setWallStress(int wall, double normalStress);
     //- Set the flag of grains `indices`; prescribedVelocity uses (vx, vy) for all of them.
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx = 0.0,
                        double vy = 0.0);

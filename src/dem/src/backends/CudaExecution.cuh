@@ -78,10 +78,7 @@ struct CudaExecution
     {
         if (n <= 0)
             return 0.0;
-        Vector<double> values(n);
-        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(
-            f, n, thrust::raw_pointer_cast(values.data()));
-        checkCuda(cudaGetLastError(), "kernel launch");
+        const Vector<double> values = valuesOf(n, f);
         return thrust::reduce(policy(), values.begin(), values.end(), 0.0, MaxOfDoubles());
     }
 
@@ -90,11 +87,20 @@ struct CudaExecution
     {
         if (n <= 0)
             return 0.0;
+        const Vector<double> values = valuesOf(n, f);
+        return thrust::reduce(policy(), values.begin(), values.end(), 0.0);
+    }
+
+private:
+    //- f(0), ..., f(n-1) on the device (each evaluated once: f may have side effects).
+    template <class F>
+    static Vector<double> valuesOf(int n, const F& f)
+    {
         Vector<double> values(n);
         forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(
             f, n, thrust::raw_pointer_cast(values.data()));
         checkCuda(cudaGetLastError(), "kernel launch");
-        return thrust::reduce(policy(), values.begin(), values.end(), 0.0);
+        return values;
     }
 };
 

@@ -26,6 +26,7 @@ public:
     virtual void addGrains(const std::vector<GrainInit>& grains) = 0;
     virtual int addWall(const WallSpec& wall) = 0;
     virtual void setWallMotion(int wall, const WallSpec& spec) = 0;
+    virtual void setWallStress(int wall, double normalStress) = 0;
     virtual void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                                double vy) = 0;
     virtual void setViscousDrag(double drag) = 0;

@@ -65,6 +65,14 @@ public:
         w.velocity = spec.mode == WallSpec::Mode::fixed ? 0.0 : spec.velocity;
         w.acceleration = 0.0;
     }
+    void setWallStress(int wall, double normalStress) override
+    {
+        WallState& w = walls_.at(checkWall(wall));
+        if (w.spec.mode != WallSpec::Mode::stress)
+            throw Error("setWallStress: wall " + std::to_string(wall) +
+                        " is not stress-controlled");
+        w.spec.normalStress = normalStress;
+    }
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                        double vy) override;
     void setViscousDrag(double drag) override { params_.viscousDrag = drag; }

@@ -117,6 +117,24 @@ GrainData EngineImpl<Exec>::grains() const
     vector3(fAngularVelocity, out.angularVelocity);
     vector3(fForce, out.force);
     vector3(fTorque, out.torque);
+    {
+        Vec<double> fluidForce(3 * std::size_t(n), 0.0);
+        EngineImpl& e = self();
+        FluidView fluid = fluid_;
+        fluid.gradP = thrust::raw_pointer_cast(e.fluidGradP_.data());
+        Exec::forEach(
+            n, FluidForceOnGrains{e.grains_.vec3(fPosition),
+                                  e.grains_.real(fRadius),
+                                  fluid,
+                                  {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                                  thrust::raw_pointer_cast(fluidForce.data())});
+        std::vector<double> h(fluidForce.size());
+        thrust::copy(fluidForce.begin(), fluidForce.end(), h.begin());
+        out.fluidForce.resize(h.size());
+        for (int i = 0; i < n; ++i)
+            for (int d = 0; d < 3; ++d)
+                out.fluidForce[3 * std::size_t(id[i]) + d] = h[3 * std::size_t(i) + d];
+    }
     std::vector<double> origin;
     vector3(fOrigin, origin);
     out.displacement.resize(3 * std::size_t(n));

@@ -64,6 +64,7 @@ SystemState EngineImpl<Exec>::exportState() const
         wallInts.insert(wallInts.end(), {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
                                          std::int64_t(w.spec.frictional)});
     }
+    s.integers["pairs.pairMajorLayout"] = {std::int64_t(Exec::kPairMajor)};
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
     s.integers["counters"] = {steps_,
                               std::int64_t(rebuilds_),
@@ -82,6 +83,9 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     if (counters.size() != 6)
         throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
                     " entries, expected 6");
+    if (entry(s.integers, "pairs.pairMajorLayout") != std::vector<std::int64_t>{Exec::kPairMajor})
+        throw Error("importState: the state was exported by another backend (contact history "
+                    "layout differs); import it into a System with the same backend");
     const int n = int(counters[5]);
     grains_.resizeForImport(n);
     for (int f = 0; f < kRealFieldCount; ++f)

@@ -49,12 +49,14 @@ struct LinearSpringContact
         {
             const double lengthBefore2 = xi.squaredNorm();
             xi -= normalPart * n;
-            const double lengthAfter2 = lengthBefore2 - normalPart * normalPart;
-            if (lengthAfter2 > 0.0)
+            const double normal2 = normalPart * normalPart;
+            // Restore the length: factor sqrt(1 + e), e = normal2 / lengthAfter2 ~ (rotation per
+            // step)^2. Below 1e-17 the factor rounds to exactly 1 (the common quasi-static case,
+            // no division); below 1e-4 the series is exact to round-off.
+            const double lengthAfter2 = lengthBefore2 - normal2;
+            if (lengthAfter2 > 0.0 && normal2 > 1e-17 * lengthAfter2)
             {
-                // Restore the length: sqrt(1 + e) with e = normalPart^2 / lengthAfter2, which
-                // is ~(rotation per step)^2; the series is exact to round-off below 1e-4.
-                const double e = normalPart * normalPart / lengthAfter2;
+                const double e = normal2 / lengthAfter2;
                 xi *= e < 1e-4 ? 1.0 + e * (0.5 - 0.125 * e) : std::sqrt(1.0 + e);
             }
         }

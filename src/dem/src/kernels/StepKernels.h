@@ -16,12 +16,40 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
+//- The pore fluid's force on a grain (Damsgaard et al. 2015, eq. 12): f = -V grad p(x) -
+//- rho_f V g, grad p interpolated with the deposit's trilinear weights.
 struct FluidView
 {
     bool active = false;
     GridView grid;
     const double* gradP = nullptr; //!< 3 per cell interleaved
     double density = 0;
+
+    DEM_HD Vector3d force(const Vector3d& x, double r, const Vector3d& gvec) const
+    {
+        if (!active)
+            return Vector3d::Zero();
+        const double volume = 4.18879020478639098 * r * r * r; // 4/3 pi r^3
+        return -volume * (interpolateVector(grid, gradP, x) + density * gvec);
+    }
+};
+
+//- Read-back of the fluid force on every grain (internal order, 3 per grain interleaved).
+struct FluidForceOnGrains
+{
+    Vec3Array position;
+    const double* radius;
+    FluidView fluid;
+    double gravity[3];
+    double* out;
+
+    DEM_HD void operator()(int i) const
+    {
+        const Vector3d f =
+            fluid.force(position(i), radius[i], Vector3d(gravity[0], gravity[1], gravity[2]));
+        for (int d = 0; d < 3; ++d)
+            out[3L * i + d] = f[d];
+    }
 };
 
 struct ForceKernel
@@ -43,12 +71,7 @@ struct ForceKernel
         const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
         Vector3d force = gvec / g.packedVelocities[8L * i + 3] - drag * v; // m g - c v
         Vector3d torque = Vector3d::Zero();
-        if (fluid.active)
-        {
-            const double volume = 4.18879020478639098 * r * r * r; // 4/3 pi r^3
-            force -=
-                volume * (interpolateVector(fluid.grid, fluid.gradP, x) + fluid.density * gvec);
-        }
+        force += fluid.force(x, r, gvec);
         addWallContacts(i, x, v, omega, r, force, torque);
         addOwnedPairs(i, x, v, omega, r, force, torque);
         double* partial = g.packedForce + 8L * i; // summed up by GatherKick
