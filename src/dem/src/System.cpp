@@ -187,6 +187,10 @@ double System::prescribedGrainForceX() const
 {
     return impl_->engine->prescribedGrainForceX();
 }
+double System::prescribedGrainImpulseX() const
+{
+    return impl_->engine->prescribedGrainImpulseX();
+}
 std::size_t System::contactCount() const
 {
     return impl_->engine->contactCount();

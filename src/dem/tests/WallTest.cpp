@@ -2,7 +2,8 @@
 // A stress-controlled top wall (mass m_w, normal stress sigma0) on columns of grains comes to
 // rest where the grains' reaction equals sigma0 A, at the height given by the column's springs
 // in series; a velocity-controlled wall moves at its velocity; prescribed-velocity grains keep
-// their horizontal velocity and report their x-force.
+// their horizontal velocity and report their x-force; a prescribed grain sliding on a
+// frictional floor accumulates the impulse -mu m g t of Coulomb friction.
 #include "TestSupport.h"
 
 using namespace demTest;
@@ -90,6 +91,28 @@ TEST_P(Walls, VelocityWallAndPrescribedGrains)
     s.setGrainFlags({0}, dem::GrainFlag::fixed);
     s.step(10);
     EXPECT_EQ(s.grains().velocity[2], 0.0);
+}
+
+TEST_P(Walls, PrescribedGrainImpulseIsCoulombFriction)
+{
+    dem::Parameters p = parameters();
+    p.gravity = {0, 0, -9.81};
+    p.grainWall.normalDamping =
+        2 * 0.5 * std::sqrt(p.grainWall.normalStiffness * 0.0109); // zeta 0.5
+    dem::System s(p);
+    dem::GrainInit g;
+    g.position = {0.5, 0.5, 0.01 - 0.0109 * 9.81 / p.grainWall.normalStiffness}; // at rest
+    s.addGrains({g});
+    s.setGrainFlags({0}, dem::GrainFlag::prescribedVelocity, 0.2, 0.0);
+    s.addWall(dem::WallSpec());
+    s.step(20000); // settled on the floor, sliding at 0.2 m/s
+    const double m = s.grains().mass[0], t0 = s.time(), i0 = s.prescribedGrainImpulseX();
+    s.step(10000);
+    const double meanForce = (s.prescribedGrainImpulseX() - i0) / (s.time() - t0);
+    const double coulomb = -p.grainWall.friction * m * 9.81;
+    std::printf("  mean x-force %.9g N, Coulomb friction %.9g N\n", meanForce, coulomb);
+    EXPECT_NEAR(meanForce / coulomb, 1.0, 1e-9);
+    EXPECT_NEAR(s.prescribedGrainForceX() / coulomb, 1.0, 1e-9);
 }
 
 DEM_TEST_ON_ALL_BACKENDS(Walls);

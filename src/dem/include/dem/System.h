@@ -68,6 +68,9 @@ public:
     WallData wall(int wall) const;
     //- Sum of x-forces on prescribedVelocity grains (shear resistance of the top layer) [N].
     double prescribedGrainForceX() const;
+    //- Time integral of that force since the grains were added [N s], summed every step:
+    //- differences over an interval give the interval's mean shear resistance.
+    double prescribedGrainImpulseX() const;
     //- Grain-grain pairs currently touching (each counted once).
     std::size_t contactCount() const;
     //- Neighbour-list pairs stored (each counted once).

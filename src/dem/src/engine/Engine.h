@@ -39,6 +39,7 @@ public:
     virtual int wallCount() const = 0;
     virtual WallData wall(int wall) const = 0;
     virtual double prescribedGrainForceX() const = 0;
+    virtual double prescribedGrainImpulseX() const = 0;
     virtual std::size_t contactCount() const = 0;
     virtual std::size_t pairCount() const = 0;
     virtual std::size_t rebuildCount() const = 0;

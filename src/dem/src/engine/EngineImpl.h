@@ -119,6 +119,10 @@ public:
     {
         return Exec::sumOf(grains_.size(), PrescribedForceX{self().grains_.view()});
     }
+    double prescribedGrainImpulseX() const override
+    {
+        return Exec::sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)});
+    }
     std::size_t contactCount() const override;
     std::size_t pairCount() const override { return std::size_t(pairs_.count()); }
     std::size_t rebuildCount() const override { return rebuilds_; }

@@ -36,6 +36,7 @@ enum RealField
     fInverseInertia,
     fWallHistory,
     fWallForce,
+    fImpulseX, //!< time integral of the x-force on a prescribed-velocity grain (else 0)
     kRealFieldCount
 };
 
@@ -69,7 +70,8 @@ inline const FieldInfo& realFieldInfo(int f)
                                                      {"inverseMass", 1},
                                                      {"inverseInertia", 1},
                                                      {"wallHistory", 3 * kMaxWalls},
-                                                     {"wallForce", kMaxWalls}};
+                                                     {"wallForce", kMaxWalls},
+                                                     {"impulseX", 1}};
     return table[f];
 }
 
@@ -109,6 +111,7 @@ public:
         g.inverseInertia = real(fInverseInertia);
         g.wallHistory = real(fWallHistory);
         g.wallForce = real(fWallForce);
+        g.impulseX = real(fImpulseX);
         g.flag = integer(fFlag);
         g.wallContacts = integer(fWallContacts);
         if (packedPositionRadius_.size() != 4 * std::size_t(n_))

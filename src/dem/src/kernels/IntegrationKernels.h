@@ -119,6 +119,8 @@ struct GatherKick
             torque += Vector3d(reaction[3 * cs], reaction[4 * cs], reaction[5 * cs]);
         }
         const int flag = g.flag[j];
+        if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
+            g.impulseX[j] += dt * force.x();
         double* vw = g.packedVelocities + 8L * j;
         double* xr = g.packedPositionRadius + 4L * j;
         Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);

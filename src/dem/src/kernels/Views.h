@@ -48,6 +48,7 @@ struct GrainView
     double* wallForce = nullptr;   //!< kMaxWalls components: z-force of grain on wall
     int* flag = nullptr;
     int* wallContacts = nullptr; //!< bit w: touching wall w (history and force to clear)
+    double* impulseX = nullptr;  //!< integral of F_x dt on prescribed-velocity grains
     //- Packed copies (one or two cache lines per grain instead of ten arrays), the current
     //- state within a step() call: (x, y, z, r), (vx, vy, vz, 1/m, wx, wy, wz, 1/I) and
     //- (x, y, z, 0) at the last rebuild.

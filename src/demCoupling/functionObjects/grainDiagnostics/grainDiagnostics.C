@@ -52,7 +52,10 @@ Foam::functionObjects::grainDiagnostics::grainDiagnostics
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, typeName, dict)
+    writeFile(mesh_, name, typeName, dict),
+    lastTime_(0),
+    lastImpulse_(0),
+    hasLast_(false)
 {
     read(dict);
     writeFileHeader(file());
@@ -119,7 +122,15 @@ bool Foam::functionObjects::grainDiagnostics::write()
         (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
     const scalar strain =
         (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
-    const scalar tau = -dem.prescribedGrainForceX()/cloud.boxArea();
+    const scalar t = dem.time();
+    const scalar impulse = dem.prescribedGrainImpulseX();
+    const scalar tau =
+        -(hasLast_ && t > lastTime_
+        ? (impulse - lastImpulse_)/(t - lastTime_)
+        : dem.prescribedGrainForceX())/cloud.boxArea();
+    lastTime_ = t;
+    lastImpulse_ = impulse;
+    hasLast_ = true;
     const scalar sigma0 = cloud.topWallStress();
 
     scalar pMin = 0, pMean = 0, pMax = 0;

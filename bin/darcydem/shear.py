@@ -1,0 +1,479 @@
+"""The shear experiment of Damsgaard et al. (2015, The Cryosphere 9, 2183),
+sections 2.4 and 3, run through real case directories:
+
+  1. settle       demFoam: a loose random gas of grains (makeGrains --layout
+                  random) falls under gravity with a viscous drag into a
+                  dense, disordered bed;
+  2. consolidate  demFoam: the stress-controlled top wall at sigma0 presses
+                  the bed until it is at rest; its demState is the packing
+                  every shear case starts from (identical for all). Both
+                  with frictionless grains (preparationFriction) for a
+                  dense random packing; the shear cases restore mu = 0.5;
+  3. shear        the bottom layer fixed, the top layer moved at the shear
+                  velocity (free vertically, no rotation) under the top wall
+                  at sigma0, periodic x and y (Fig. 3): dry (demFoam), and
+                  saturated (darcyDemFoam, p fixed at the top and at/above
+                  the top wall, no flow through the base) for each kc;
+  4. rate series  the impermeable case with mu_f = 1, 0.1, 0.01 x mu_ref,
+                  the paper's stand-in for shearing 1, 10, 100 x slower.
+
+Every stage is a case directory under <study>/stages/<stage>, made from the
+template case in <study> (0/, constant/, system/). Sizes: SIZES below.
+"""
+
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+from darcydem.case import Case
+from darcydem.foamfiles import time_dirs
+
+BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# Reference values of the seed paper (Table 1)
+PAPER_MU = 1.797e-6            # scaled pore-water viscosity [Pa s]
+PAPER_BETA = 1.426e-8          # scaled fluid compressibility [1/Pa]
+PAPER_KN = 1.16e9              # grain stiffness [N/m]
+PAPER_SHEAR_VELOCITY = 2.32e-2  # [m/s]
+PAPER_HEIGHT = 0.5             # consolidated bed height, about [m]
+WATER_MU = 1.797e-3            # water at 0 C [Pa s]
+# The fluid bulk modulus scales with the grain stiffness as in the paper's
+# code (VALIDATION.md section 4): K_w = (2.2e9/36.4e9) k_n as a pressure.
+BULK_MODULUS_PER_STIFFNESS = 2.2e9 / 36.4e9
+
+
+def scaled_beta(kn):
+    """Fluid compressibility scaled with the grain stiffness [1/Pa]."""
+    return 1.0 / (BULK_MODULUS_PER_STIFFNESS * kn)
+
+
+# kc of the two saturated cases [m^2]
+PERMEABLE_KC = 3.5e-13
+IMPERMEABLE_KC = 3.5e-15
+
+SIZES = {
+    # Table 1 of the seed paper: meant for a GPU (days on 2 CPU cores).
+    "paper": dict(box=(0.52, 0.26), cells=(12, 6), radius=(0.01, 0.01), count=9600,
+                  kn=PAPER_KN, timeStep=2.14e-7, subSteps=200, wallMass=280.0,
+                  sigma0=2e4, shearVelocity=PAPER_SHEAR_VELOCITY, strain=0.25,
+                  rateStrain=0.25, writes=20, settleTime=1.5, consolidateTime=1.5,
+                  drag=1.0, dampingRatio=0.0, preparationFriction=0.0, seed=1),
+    # An eighth of the paper's bed (half in x, y and z), contacts 100 x
+    # softer and lightly damped (damping ratio 0.1 of a grain pair, restitution
+    # 0.73): with 8 x fewer grains the undamped rattling of the bed and the
+    # top wall dominates friction and pore pressure (README.md).
+    "quick": dict(box=(0.26, 0.13), cells=(6, 3), radius=(0.01, 0.01), count=1200,
+                  kn=PAPER_KN / 100, timeStep=2e-6, subSteps=200, wallMass=70.0,
+                  sigma0=2e4, inertialNumber=5e-4, strain=0.25, rateStrain=0.15,
+                  writes=10, settleTime=1.0, consolidateTime=1.2, drag=1.0,
+                  dampingRatio=0.1, preparationFriction=0.0, seed=1),
+    # For the tests: a small bed, a short strain.
+    "test": dict(box=(0.26, 0.0867), cells=(6, 2), radius=(0.01, 0.01), count=600,
+                 kn=PAPER_KN / 100, timeStep=2e-6, subSteps=200, wallMass=47.0,
+                 sigma0=2e4, inertialNumber=5e-4, strain=0.15, rateStrain=0.1,
+                 writes=6, settleTime=0.8, consolidateTime=1.0, drag=1.0,
+                 dampingRatio=0.1, preparationFriction=0.0, seed=3),
+}
+
+
+def hanning_smooth(y, width):
+    """Moving Hanning-window average (the paper's smoothing of Figs 4, 7)."""
+    width = max(3, int(width) | 1)
+    if len(y) < width:
+        return np.asarray(y, dtype=float)
+    w = np.hanning(width + 2)[1:-1]
+    w /= w.sum()
+    padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
+    return np.convolve(padded, w, mode="valid")
+
+
+def read_vtp_arrays(path, names):
+    """Arrays of an ASCII grains.vtp (the text before a DataArray's first
+    child element; VTK appends range information after the values)."""
+    text = open(path).read()
+    out = {}
+    for name in names:
+        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)' % name, text)
+        if not m:
+            raise KeyError(f"array {name} not in {path}")
+        out[name] = np.array([float(v) for v in m.group(1).split()])
+    m = re.search(r'<Points>\s*<DataArray[^>]*>([^<]*)', text)
+    out["position"] = np.array([float(v) for v in m.group(1).split()]).reshape(-1, 3)
+    for name in names:
+        if out[name].size == 3 * len(out["position"]):
+            out[name] = out[name].reshape(-1, 3)
+    return out
+
+
+class ShearStudy:
+    def __init__(self, study_dir, size="quick", rate_series=True, log=print):
+        if size not in SIZES:
+            sys.exit(f"shearStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
+        self.s = dict(SIZES[size])
+        self.size = size
+        self.rate_series = rate_series
+        self.log = log
+        self.dir = os.path.abspath(study_dir)
+        self.stages = os.path.join(self.dir, "stages")
+        os.makedirs(self.stages, exist_ok=True)
+        s = self.s
+        self.dx = s["box"][0] / s["cells"][0]
+        self.d = 2 * s["radius"][1]
+        self.beta = scaled_beta(s["kn"])
+        self.results = {"size": size, "settings": dict(s), "beta": self.beta}
+
+    def normal_damping(self):
+        """gamma_n = 2 zeta sqrt(m* k_n) for two grains of the largest radius."""
+        m = 2600.0 * 4.0 / 3.0 * math.pi * self.s["radius"][1] ** 3
+        return 2 * self.s["dampingRatio"] * math.sqrt(0.5 * m * self.s["kn"])
+
+    # ---- stages ---------------------------------------------------------------------------
+    def stage(self, name, app, height_cells, state_from=None):
+        c = Case(os.path.basename(self.dir), name, template_root=os.path.dirname(self.dir),
+                 run_root=self.stages)
+        s = self.s
+        block = "system/blockMeshDict"
+        c.set_variable(block, "Lx", s["box"][0])
+        c.set_variable(block, "Ly", s["box"][1])
+        c.set_variable(block, "nx", s["cells"][0])
+        c.set_variable(block, "ny", s["cells"][1])
+        c.set_variable(block, "nz", height_cells)
+        c.set_variable(block, "H", "%.12g" % (height_cells * self.dx))
+        dem = "constant/demProperties"
+        for key in ("normalStiffness", "tangentialStiffness"):
+            c.set(dem, "contact/" + key, s["kn"])
+        c.set(dem, "contact/normalDamping", "%.12g" % self.normal_damping())
+        c.set(dem, "timeStep", s["timeStep"])
+        c.set(dem, "walls/top/mass", s["wallMass"])
+        c.set(dem, "walls/top/normalStress", s["sigma0"])
+        c.set("system/controlDict", "application", app)
+        c.set("system/controlDict", "deltaT", "%.12g" % (s["subSteps"] * s["timeStep"]))
+        if app == "demFoam":
+            os.remove(c.file("constant/darcyProperties"))
+            os.remove(c.file("0/p"))
+        c.run("blockMesh")
+        if state_from is not None:
+            shutil.copy(state_from, c.file("0/demState"))
+        return c
+
+    @staticmethod
+    def last_time(case):
+        return case.times()[-1][1]
+
+    @staticmethod
+    def diagnostics(case):
+        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
+                       comments="#", ndmin=2)
+        names = ("t strain tau friction dilation wall pMin pMean pMax kinetic "
+                 "contacts throughput solidVolumeError").split()
+        return {n: d[:, i] for i, n in enumerate(names)}
+
+    def end_and_writes(self, case, end, writes):
+        c = "system/controlDict"
+        case.set(c, "endTime", "%.12g" % end)
+        case.set(c, "writeInterval", "%.12g" % (end / writes))
+
+    def prepare(self):
+        """Settle a loose lattice, then consolidate at sigma0 until at rest."""
+        s = self.s
+        r0, r1 = s["radius"]
+        # random loose gas at solid fraction 0.25: settles into a disordered bed
+        lattice_top = s["count"] * 4 / 3 * math.pi * r1**3 / (0.25 * s["box"][0] * s["box"][1])
+        settle_cells = int(math.ceil((lattice_top + 2 * self.d) / self.dx))
+        a = self.stage("settle", "demFoam", settle_cells)
+        subprocess.run([os.path.join(BIN, "makeGrains"), "--box", str(s["box"][0]),
+                        str(s["box"][1]), "--z", "0", str(lattice_top), "--radius", str(r0),
+                        str(r1), "--layout", "random", "--gap", "0.02", "--count",
+                        str(s["count"]), "--seed",
+                        str(s["seed"]), "-o", a.file("0/grains")],
+                       check=True, stdout=subprocess.DEVNULL)
+        dem = "constant/demProperties"
+        a.set(dem, "walls/top/mode", "fixed")
+        a.set(dem, "walls/top/position", "%.12g" % (settle_cells * self.dx - 1e-3))
+        a.set(dem, "viscousDrag", 0.1 * s["drag"])  # falls at about 1 m/s
+        a.set(dem, "contact/friction", s["preparationFriction"])
+        self.end_and_writes(a, s["settleTime"], 1)
+        self.log(f"shearStudy: settle {s['count']} grains ({s['settleTime']} s)")
+        a.run("demFoam")
+        grains = np.loadtxt(a.file(os.path.join(self.last_time(a), "grains")), comments="#")
+        top = float(np.max(grains[:, 2] + grains[:, 3]))
+
+        self.cells_z = int(math.ceil((top + 3 * self.d) / self.dx))
+        b = self.stage("consolidate", "demFoam", self.cells_z)
+        shutil.copy(a.file(os.path.join(self.last_time(a), "grains")), b.file("0/grains"))
+        b.set(dem, "walls/top/position", "%.12g" % (top + 1e-3))
+        b.set(dem, "viscousDrag", s["drag"])
+        b.set(dem, "contact/friction", s["preparationFriction"])
+        self.end_and_writes(b, s["consolidateTime"], 1)
+        self.log(f"shearStudy: consolidate at sigma0 = {s['sigma0']:g} Pa "
+                 f"({s['consolidateTime']} s)")
+        b.run("demFoam")
+        d = self.diagnostics(b)
+        self.prepared = b.file(os.path.join(self.last_time(b), "demState"))
+        self.height = float(d["wall"][-1])  # bottom wall at z = 0
+        self.results["prepare"] = {
+            "grains": int(len(grains)), "height": self.height,
+            "kineticEnergyEnd": float(d["kinetic"][-1]),
+            "contactsPerGrain": float(d["contacts"][-1]),
+            "meshCellsZ": self.cells_z}
+
+    def shear_velocity(self):
+        s = self.s
+        if "shearVelocity" in s:
+            return s["shearVelocity"]
+        # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, VALIDATION.md section 4)
+        gamma_dot = s["inertialNumber"] * math.sqrt(s["sigma0"] / 2600.0) / self.d
+        return gamma_dot * self.height
+
+    def reference_viscosity(self):
+        """mu_f of the reference velocity. Paper size: the paper's 1.797e-6.
+        Smaller sizes: the velocity scaling of the paper applied so that the
+        ratio of the pore-pressure diffusion time to the shear time,
+        H^2 beta phi mu gammaDot / k, equals the paper's for the same kc."""
+        if self.size == "paper":
+            return PAPER_MU
+        gamma_dot = self.shear_velocity() / self.height
+        paper_gamma_dot = PAPER_SHEAR_VELOCITY / PAPER_HEIGHT
+        return PAPER_MU * (PAPER_HEIGHT**2 * PAPER_BETA * paper_gamma_dot) / (
+            self.height**2 * self.beta * gamma_dot)
+
+    def shear(self, name, kc=None, mu_factor=1.0, velocity_factor=1.0, strain=None):
+        """One shear case from the prepared packing; kc None: dry."""
+        s = self.s
+        app = "demFoam" if kc is None else "darcyDemFoam"
+        c = self.stage(name, app, self.cells_z, self.prepared)
+        v = self.shear_velocity() * velocity_factor
+        strain = strain or s["strain"]
+        dem = "constant/demProperties"
+        c.set(dem, "viscousDrag", 0)
+        c.set(dem, "grainFlags",
+              "{ base { flag fixed; zMax %.12g; } top { flag prescribedVelocity; zMin %.12g;"
+              " velocity (%.12g 0); } }" % (self.d, self.height - self.d, v))
+        mu = None
+        if kc is not None:
+            mu = self.reference_viscosity() * mu_factor
+            props = "constant/darcyProperties"
+            c.set(props, "mu", "[1 -1 -1 0 0 0 0] %.12g" % mu)
+            c.set(props, "beta", "[-1 1 2 0 0 0 0] %.12g" % self.beta)
+            c.set(props, "permeability/kc", kc)
+        end = strain * self.height / v
+        self.end_and_writes(c, end, s["writes"])
+        self.log(f"shearStudy: shear {name}: v = {v:.4g} m/s to strain {strain}"
+                 + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s"))
+        c.run(app)
+        return self.summarise(c, name, kc, mu, v)
+
+    def summarise(self, c, name, kc, mu, v):
+        d = self.diagnostics(c)
+        strain, friction = d["strain"], d["friction"]
+        width = max(3, len(friction) // 25)
+        smooth = hanning_smooth(friction, width)
+        p_min, p_mean, p_max = (hanning_smooth(d[k], width) for k in ("pMin", "pMean", "pMax"))
+        steady_blocks = np.array_split(friction[strain >= 0.6 * strain[-1]], 8)
+        steady = strain >= 0.6 * strain[-1]
+        early = strain <= 0.12
+        dilating = (strain >= 0.02) & (strain <= 0.1)
+        out = {
+            "kc": kc, "mu": mu, "shearVelocity": v,
+            "inertialNumber": v / self.height * self.d / math.sqrt(self.s["sigma0"] / 2600),
+            "peakFriction": float(smooth[early].max()),
+            "peakFrictionStrain": float(strain[early][np.argmax(smooth[early])]),
+            "dilationPhaseFriction": float(friction[dilating].mean()),
+            "steadyFriction": float(friction[steady].mean()),
+            "steadyFrictionStd": float(friction[steady].std()),
+            # standard error of the steady mean from 8 block means
+            "steadyFrictionStdErr": float(np.std([b.mean() for b in steady_blocks], ddof=1)
+                                          / math.sqrt(len(steady_blocks))),
+            "maxDilation": float(d["dilation"].max()),
+            "pMin": float(d["pMin"].min()), "pMax": float(d["pMax"].max()),
+            "pMinSmoothed": float(p_min.min()), "pMaxSmoothed": float(p_max.max()),
+            "pMeanSmoothedMin": float(p_mean.min()),
+            "strainEnd": float(strain[-1]),
+            "throughput": float(d["throughput"][-1]),
+        }
+        if kc is not None:
+            k = kc * 0.35**3 / 0.65**2
+            out["diffusivityAtPorosity0.35"] = k / (self.beta * 0.35 * mu)
+        self.curves[name] = {"d": d, "smooth": smooth, "case": c}
+        return out
+
+    # ---- the experiment -------------------------------------------------------------------
+    def run(self):
+        self.curves = {}
+        self.prepare()
+        r = self.results
+        r["shearVelocity"] = self.shear_velocity()
+        r["referenceViscosity"] = self.reference_viscosity()
+        r["dry"] = self.shear("dry")
+        r["permeable"] = self.shear("permeable", kc=PERMEABLE_KC)
+        r["impermeable"] = self.shear("impermeable", kc=IMPERMEABLE_KC)
+        if self.rate_series:
+            strain = self.s["rateStrain"]
+            r["rate"] = {"1": r["impermeable"]}
+            for factor in (0.1, 0.01):
+                name = "impermeable_mu%g" % factor
+                r["rate"]["%g" % factor] = self.shear(name, kc=IMPERMEABLE_KC,
+                                                      mu_factor=factor, strain=strain)
+        self.write_results()
+        return r
+
+    def write_results(self):
+        with open(os.path.join(self.dir, "results.json"), "w") as f:
+            json.dump(self.results, f, indent=2)
+
+    # ---- figures --------------------------------------------------------------------------
+    def profiles(self, name):
+        """(strain at each write, z, p[write, z], displacementX[write, z])."""
+        c = self.curves[name]["case"]
+        d = self.curves[name]["d"]
+        rows = []
+        for t, tname in time_dirs(c.path):
+            path = c.file(os.path.join("postProcessing", "profiles", tname, "profiles.dat"))
+            if os.path.exists(path):
+                rows.append((np.interp(t, d["t"], d["strain"]), np.loadtxt(path, ndmin=2)))
+        strain = np.array([r[0] for r in rows])
+        z = rows[0][1][:, 0]
+        p = np.array([r[1][:, 1] for r in rows])
+        return strain, z, p
+
+    def displacement_profile(self, name):
+        """Mean x-displacement of the grains in bins one diameter thick at
+        the last write (strain at the end of the case), from grains.vtp."""
+        c = self.curves[name]["case"]
+        g = read_vtp_arrays(c.file(os.path.join(self.last_time(c), "grains.vtp")),
+                            ["displacement"])
+        z, ux = g["position"][:, 2], g["displacement"][:, 0]
+        edges = np.arange(0, self.height + self.d, self.d)
+        centres, means = [], []
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            sel = (z >= lo) & (z < hi)
+            if sel.any():
+                centres.append(0.5 * (lo + hi))
+                means.append(ux[sel].mean())
+        return np.array(centres), np.array(means), g
+
+    def plot(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        out = []
+        cases = [("dry", "dry"), ("permeable", "kc = 3.5e-13 m²"),
+                 ("impermeable", "kc = 3.5e-15 m²")]
+
+        # Fig. 7: friction, dilation, pressure against strain
+        fig, ax = plt.subplots(3, 3, figsize=(13, 9), sharex=True, sharey="row")
+        for j, (name, title) in enumerate(cases):
+            d, smooth = self.curves[name]["d"], self.curves[name]["smooth"]
+            ax[0, j].plot(d["strain"], d["friction"], color="0.7", lw=0.6, label="raw")
+            ax[0, j].plot(d["strain"], smooth, "k-", lw=1.5, label="Hanning smoothed")
+            ax[0, j].set_title(title)
+            ax[1, j].plot(d["strain"], d["dilation"], "k-")
+            for key, style in (("pMin", "b-"), ("pMean", "k-"), ("pMax", "r-")):
+                ax[2, j].plot(d["strain"], d[key] / 1e3, style, lw=1, label=key)
+            ax[2, j].set_xlabel("shear strain [-]")
+        ax[0, 0].set_ylabel("shear friction τ/σ0 [-]")
+        ax[1, 0].set_ylabel("dilation [grain diameters]")
+        ax[2, 0].set_ylabel("pore pressure [kPa]")
+        ax[0, 0].legend(loc="lower right")
+        ax[2, 2].legend(loc="lower right")
+        fig.suptitle(f"Shear experiment ({self.size} size): dry, permeable, impermeable")
+        fig.tight_layout()
+        out.append(self.save(fig, "shearFriction.png"))
+
+        # Fig. 11: horizontally averaged p(z, strain)
+        fig, ax = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+        for a, (name, title) in zip(ax, cases[1:]):
+            strain, z, p = self.profiles(name)
+            inside = z < self.height
+            m = a.pcolormesh(strain, z[inside], p[:, inside].T / 1e3, shading="nearest",
+                             cmap="RdBu_r", vmin=-np.abs(p).max() / 1e3,
+                             vmax=np.abs(p).max() / 1e3)
+            fig.colorbar(m, ax=a, label="p [kPa]")
+            a.set_title(title)
+            a.set_xlabel("shear strain [-]")
+        ax[0].set_ylabel("height above base [m]")
+        fig.tight_layout()
+        out.append(self.save(fig, "shearPressureMaps.png"))
+
+        # Fig. 8: x-displacement profiles at the end strain
+        fig, ax = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
+        for name, title in cases:
+            z, ux, _ = self.displacement_profile(name)
+            ax[0].plot(ux / ux.max(), z, "o-", ms=3, label=title)
+        ax[0].set_title("different permeabilities")
+        if self.rate_series and "rate" in self.results:
+            for factor in ("1", "0.1", "0.01"):
+                name = "impermeable" if factor == "1" else "impermeable_mu" + factor
+                z, ux, _ = self.displacement_profile(name)
+                ax[1].plot(ux / ux.max(), z, "o-", ms=3, label=f"μ_f × {factor}")
+        ax[1].set_title("impermeable, rate series")
+        for a in ax:
+            a.set_xlabel("x-displacement / top displacement [-]")
+            a.legend()
+        ax[0].set_ylabel("height above base [m]")
+        fig.tight_layout()
+        out.append(self.save(fig, "shearDisplacementProfiles.png"))
+
+        # Fig. 9: the grains coloured by x-displacement
+        fig, ax = plt.subplots(1, 3, figsize=(14, 5), sharey=True)
+        for a, (name, title) in zip(ax, cases):
+            _, _, g = self.displacement_profile(name)
+            x, z = g["position"][:, 0], g["position"][:, 2]
+            order = np.argsort(g["position"][:, 1])[::-1]  # near grains on top
+            sc = a.scatter(x[order], z[order], c=g["displacement"][order, 0], cmap="viridis",
+                           s=(72 * self.d * 5.0 / self.s["box"][0]) ** 2 * 4,
+                           edgecolors="k", linewidths=0.2)
+            a.set_aspect("equal")
+            a.set_title(title)
+            a.set_xlabel("x [m]")
+            fig.colorbar(sc, ax=a, shrink=0.7, label="x-displacement [m]")
+        ax[0].set_ylabel("z [m]")
+        fig.tight_layout()
+        out.append(self.save(fig, "shearGrains.png"))
+
+        # Fig. 6: peak friction against the equivalent shear velocity
+        if self.rate_series and "rate" in self.results:
+            fig, a = plt.subplots(figsize=(6, 4.5))
+            # mu_ref stands for the paper's natural velocity 2.32e-2 m/s x 1e-3
+            # (mu_f = mu_water v_natural / v_sim): mu_f x f stands for f x v_natural
+            v_natural = PAPER_SHEAR_VELOCITY * PAPER_MU / WATER_MU * 3.156e7  # [m/a]
+            factors = np.array([1.0, 0.1, 0.01])
+            peaks = [self.results["rate"]["%g" % f]["peakFriction"] for f in factors]
+            a.semilogx(factors * v_natural, peaks, "ko-", label="impermeable (kc = 3.5e-15 m²)")
+            a.axhline(self.results["dry"]["peakFriction"], color="0.5", ls="--",
+                      label="dry")
+            a.set_xlabel("equivalent shear velocity [m/a]")
+            a.set_ylabel("peak shear friction [-]")
+            a.legend()
+            fig.tight_layout()
+            out.append(self.save(fig, "shearPeakFriction.png"))
+        return out
+
+    def save(self, fig, name):
+        import matplotlib.pyplot as plt
+        path = os.path.join(self.dir, name)
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        return path
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description="Run the shear experiment of a tutorial "
+                                 "directory (bin/darcydem/shear.py).")
+    ap.add_argument("study_dir")
+    ap.add_argument("--size", default="quick", choices=sorted(SIZES))
+    ap.add_argument("--no-rate-series", action="store_true")
+    a = ap.parse_args(argv)
+    study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series)
+    results = study.run()
+    figures = study.plot()
+    print(json.dumps({k: v for k, v in results.items() if k != "settings"}, indent=2))
+    print("shearStudy: figures " + " ".join(os.path.basename(f) for f in figures)
+          + " and results.json in " + study.dir)
