@@ -253,6 +253,7 @@ class ShearStudy:
         strain = strain or s["strain"]
         dem = "constant/demProperties"
         c.set(dem, "viscousDrag", 0)
+        c.set(dem, "walls/top/position", "%.12g" % self.height)  # as in the demState
         c.set(dem, "grainFlags",
               "{ base { flag fixed; zMax %.12g; } top { flag prescribedVelocity; zMin %.12g;"
               " velocity (%.12g 0); } }" % (self.d, self.height - self.d, v))
@@ -263,7 +264,8 @@ class ShearStudy:
             c.set(props, "mu", "[1 -1 -1 0 0 0 0] %.12g" % mu)
             c.set(props, "beta", "[-1 1 2 0 0 0 0] %.12g" % self.beta)
             c.set(props, "permeability/kc", kc)
-        end = strain * self.height / v
+        # strain = top-layer displacement / current height: allow one diameter of dilation
+        end = strain * (self.height + self.d) / v
         self.end_and_writes(c, end, s["writes"])
         self.log(f"shearStudy: shear {name}: v = {v:.4g} m/s to strain {strain}"
                  + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s"))
@@ -278,7 +280,7 @@ class ShearStudy:
         p_min, p_mean, p_max = (hanning_smooth(d[k], width) for k in ("pMin", "pMean", "pMax"))
         steady_blocks = np.array_split(friction[strain >= 0.6 * strain[-1]], 8)
         steady = strain >= 0.6 * strain[-1]
-        early = strain <= 0.12
+        early = (strain >= 0.005) & (strain <= 0.12)  # the first row is instantaneous
         dilating = (strain >= 0.02) & (strain <= 0.1)
         out = {
             "kc": kc, "mu": mu, "shearVelocity": v,
@@ -348,7 +350,7 @@ class ShearStudy:
         the last write (strain at the end of the case), from grains.vtp."""
         c = self.curves[name]["case"]
         g = read_vtp_arrays(c.file(os.path.join(self.last_time(c), "grains.vtp")),
-                            ["displacement"])
+                            ["displacement", "radius"])
         z, ux = g["position"][:, 2], g["displacement"][:, 0]
         edges = np.arange(0, self.height + self.d, self.d)
         centres, means = [], []
@@ -421,19 +423,24 @@ class ShearStudy:
         fig.tight_layout()
         out.append(self.save(fig, "shearDisplacementProfiles.png"))
 
-        # Fig. 9: the grains coloured by x-displacement
+        # Fig. 9: the grains coloured by x-displacement, seen along y (far ones first)
+        from matplotlib.collections import PatchCollection
+        from matplotlib.patches import Circle
         fig, ax = plt.subplots(1, 3, figsize=(14, 5), sharey=True)
         for a, (name, title) in zip(ax, cases):
             _, _, g = self.displacement_profile(name)
-            x, z = g["position"][:, 0], g["position"][:, 2]
-            order = np.argsort(g["position"][:, 1])[::-1]  # near grains on top
-            sc = a.scatter(x[order], z[order], c=g["displacement"][order, 0], cmap="viridis",
-                           s=(72 * self.d * 5.0 / self.s["box"][0]) ** 2 * 4,
-                           edgecolors="k", linewidths=0.2)
+            x, y, z = g["position"].T
+            order = np.argsort(y)[::-1]
+            circles = PatchCollection([Circle((x[i], z[i]), g["radius"][i]) for i in order],
+                                      cmap="viridis", edgecolor="k", linewidth=0.2)
+            circles.set_array(g["displacement"][order, 0])
+            a.add_collection(circles)
+            a.set_xlim(0, self.s["box"][0])
+            a.set_ylim(0, self.height + self.d)
             a.set_aspect("equal")
             a.set_title(title)
             a.set_xlabel("x [m]")
-            fig.colorbar(sc, ax=a, shrink=0.7, label="x-displacement [m]")
+            fig.colorbar(circles, ax=a, shrink=0.7, label="x-displacement [m]")
         ax[0].set_ylabel("z [m]")
         fig.tight_layout()
         out.append(self.save(fig, "shearGrains.png"))

@@ -83,6 +83,9 @@ def test_impermeable_lower_pressure_and_stronger_than_permeable(study):
     assert imp["pMinSmoothed"] < 2 * perm["pMinSmoothed"] < 0
     assert abs(perm["pMinSmoothed"]) < 0.05 * sigma0
     assert abs(perm["pMaxSmoothed"]) < 0.05 * sigma0
+    print(f"peak friction (Hanning-smoothed) dry {dry['peakFriction']:.3f}, permeable "
+          f"{perm['peakFriction']:.3f}, impermeable {imp['peakFriction']:.3f}")
+    assert imp["peakFriction"] > perm["peakFriction"]
     assert imp["dilationPhaseFriction"] > perm["dilationPhaseFriction"]
     assert abs(perm["dilationPhaseFriction"] - dry["dilationPhaseFriction"]) < 0.05
 
@@ -101,9 +104,12 @@ def test_impermeable_strength_rises_with_equivalent_velocity(study):
     rate = study["rate"]
     p = [rate[f]["pMinSmoothed"] for f in ("1", "0.1", "0.01")]
     f = [rate[f]["dilationPhaseFriction"] for f in ("1", "0.1", "0.01")]
-    print(f"mu_f x 1, 0.1, 0.01: smoothed pMin {p}, friction while dilating {f}")
+    peak = [rate[f]["peakFriction"] for f in ("1", "0.1", "0.01")]
+    print(f"mu_f x 1, 0.1, 0.01: smoothed pMin {p}, friction while dilating {f}, "
+          f"peak friction {peak}")
     assert p[0] < p[1] < p[2] < 0
     assert f[0] > f[2]
+    assert peak[0] > peak[2]
 
 
 def test_velocity_scaling_equivalence(study):

@@ -41,7 +41,14 @@ protected:
         for (int step = 0; step < 1500; ++step)
         {
             s.step(1);
-            out.push_back(at(s.grains().force, 0));
+            const dem::GrainData g = s.grains();
+            out.push_back(at(g.force, 0));
+            for (int i = 0; i < 2; ++i) // read back inside the box, also between rebuilds
+                for (int d = 0; d < 2; ++d)
+                {
+                    EXPECT_GE(g.position[3 * i + d], 0.0);
+                    EXPECT_LT(g.position[3 * i + d], 0.2);
+                }
         }
         *rebuilds = s.neighbourRebuildCount();
         return out;

@@ -18,7 +18,7 @@ namespace dem
 //- Grain state in add order; vectors are 3 per grain interleaved (x0 y0 z0 x1 ...).
 struct GrainData
 {
-    std::vector<double> position;     //!< wrapped into the periodic box at the last rebuild
+    std::vector<double> position;     //!< wrapped into the periodic box
     std::vector<double> displacement; //!< since the grain was added (unwrapped)
     std::vector<double> velocity;
     std::vector<double> angularVelocity;

@@ -158,6 +158,14 @@ GrainData EngineImpl<Exec>::grains() const
                       : 0.0;
             out.displacement[3 * u + d] = out.position[3 * u + d] + shift - origin[3 * u + d];
         }
+        // Inside the box also between rebuilds (a grain may have crossed a seam since)
+        for (int d = 0; d < 2; ++d)
+        {
+            const double lower = params_.boxLower[d], length = params_.boxUpper[d] - lower;
+            double& x = out.position[3 * u + d];
+            if (params_.periodic[d] && (x < lower || x >= lower + length))
+                x -= length * std::floor((x - lower) / length);
+        }
     }
     return out;
 }
