@@ -281,6 +281,8 @@ class ShearStudy:
         steady_blocks = np.array_split(friction[strain >= 0.6 * strain[-1]], 8)
         steady = strain >= 0.6 * strain[-1]
         early = (strain >= 0.005) & (strain <= 0.12)  # the first row is instantaneous
+        if not early.any():  # a run too short for the window (smoke tests)
+            early = np.ones_like(strain, dtype=bool)
         dilating = (strain >= 0.02) & (strain <= 0.1)
         out = {
             "kc": kc, "mu": mu, "shearVelocity": v,
