@@ -1,9 +1,9 @@
 // IntegrationKernels.h
 // Velocity-Verlet integration kernels, written once for both backends:
 //   KickDrift   first half kick and drift of a step() call (from the SoA fields)
-//   GatherKick  adds the reactions of the pairs a grain is partner of (fixed order: results do
-//               not depend on the thread count), the second half kick and, within a step()
-//               call, the next step's kick and drift in the same pass
+//   GatherKick  adds the loads of the pairs a grain owns and of those it is partner of (fixed
+//               order: results do not depend on the thread count), the second half kick and, within
+//               a step() call, the next step's kick and drift in the same pass
 // Within a step() call the packed per-grain copies (GrainView::pack) are the current state,
 // so a pass touches three cache lines per grain instead of ~25 arrays; the SoA fields are
 // brought up to date at the end of the call and before a neighbour rebuild.
@@ -108,15 +108,24 @@ struct GatherKick
         const double* partial = g.packedForce + 8L * j;
         Vector3d force(partial[0], partial[1], partial[2]),
             torque(partial[4], partial[5], partial[6]);
-        const long cs = pairs.componentStride;
+        // Pairs j owns, then pairs j is the partner of (open pairs hold zero loads).
+        const long cs = pairs.stride();
+        for (int p = pairs.start[j]; p < pairs.start[j + 1]; ++p)
+        {
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[6 * cs];
+            force += Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+        }
         for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
         {
             const int p = pairs.incomingPair[q];
-            if (p < 0 || !pairs.touching[p]) // p < 0 cannot happen: the search is symmetric
+            if (p < 0) // cannot happen: the search is symmetric
                 continue;
-            const double* reaction = pairs.reactionOf(p);
-            force += Vector3d(reaction[0], reaction[cs], reaction[2 * cs]);
-            torque += Vector3d(reaction[3 * cs], reaction[4 * cs], reaction[5 * cs]);
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[7 * cs];
+            force -= Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
         }
         const int flag = g.flag[j];
         double* vw = g.packedVelocities + 8L * j;
