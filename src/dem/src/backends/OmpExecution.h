@@ -56,6 +56,24 @@ struct OmpExecution
         }
     }
 
+    //- Independent per-grain and per-pair kernels in one parallel region (one fork and join
+    //- instead of two; no barrier between the two loops, each split statically).
+    template <class G, class P>
+    static void forEachGrainAndPair(int n, const G& g, long m, const P& f)
+    {
+#pragma omp parallel if (n >= kParallelThreshold || m >= kParallelThreshold)
+        {
+            const G grainKernel = g;
+#pragma omp for schedule(static) nowait
+            for (int i = 0; i < n; ++i)
+                grainKernel(i);
+            const P local = f; // members become loop invariants
+#pragma omp for simd schedule(static)
+            for (long i = 0; i < m; ++i)
+                local(i);
+        }
+    }
+
     //- Kernels that add into shared cells: serial on the CPU (deterministic, and cheap next to
     //- a fluid step).
     template <class F>

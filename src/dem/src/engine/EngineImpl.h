@@ -179,9 +179,9 @@ private:
                                      params_.viscousDrag,
                                      fluid_};
         grainKernel.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
-        Exec::forEach(grains_.size(), grainKernel);
-        Exec::forEachPair(pairs_.count(), PairForceKernel{grains_.view(), pairs_.view(), boxView(),
-                                                          law(params_.grainGrain, historyDt)});
+        Exec::forEachGrainAndPair(grains_.size(), grainKernel, pairs_.count(),
+                                  PairForceKernel{grains_.view(), pairs_.view(), boxView(),
+                                                  law(params_.grainGrain, historyDt)});
     }
 
     WallsView wallsView() const

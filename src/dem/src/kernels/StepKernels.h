@@ -70,7 +70,8 @@ struct GrainForceKernel
                        omega = g.packedAngularVelocity(i);
         const double r = g.packedRadius(i);
         const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
-        Vector3d force = gvec / g.packedVelocities[8L * i + 3] - drag * v; // m g - c v
+        const double mass = 1.0 / g.packedVelocities[8L * i + 3];
+        Vector3d force = mass * gvec - drag * v; // m g - c v
         Vector3d torque = Vector3d::Zero();
         force += fluid.force(x, r, gvec);
         addWallContacts(i, x, v, omega, r, force, torque);
