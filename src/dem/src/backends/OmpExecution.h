@@ -68,10 +68,10 @@ struct OmpExecution
             for (int i = 0; i < n; ++i)
                 grainKernel(i);
             const P local = f; // members become loop invariants
-#pragma omp for simd schedule(static)
+#pragma omp for simd schedule(static) nowait
             for (long i = 0; i < m; ++i)
                 local(i);
-        }
+        } // the join is the only barrier
     }
 
     //- Kernels that add into shared cells: serial on the CPU (deterministic, and cheap next to
