@@ -84,13 +84,6 @@ struct CudaExecution
         checkCuda(cudaGetLastError(), "kernel launch");
     }
 
-    template <class G, class P>
-    static void forEachGrainAndPair(int n, const G& g, long m, const P& f)
-    {
-        forEach(n, g);
-        forEachPair(m, f);
-    }
-
     template <class F>
     static void forEachScatter(int n, const F& f)
     {

@@ -50,26 +50,8 @@ struct OmpExecution
 #pragma omp parallel if (n >= kParallelThreshold)
         {
             const F local = f; // members become loop invariants
-#pragma omp for simd schedule(static)
-            for (long i = 0; i < n; ++i)
-                local(i);
-        }
-    }
-
-    //- Independent per-grain and per-pair kernels in one parallel region (one fork and join
-    //- instead of two; no barrier between the two loops, each split statically).
-    template <class G, class P>
-    static void forEachGrainAndPair(int n, const G& g, long m, const P& f)
-    {
-#pragma omp parallel if (n >= kParallelThreshold || m >= kParallelThreshold)
-        {
-            const G grainKernel = g;
-#pragma omp for schedule(static) nowait
-            for (int i = 0; i < n; ++i)
-                grainKernel(i);
-            const P local = f; // members become loop invariants
 #pragma omp for simd schedule(static) nowait
-            for (long i = 0; i < m; ++i)
+            for (long i = 0; i < n; ++i)
                 local(i);
         } // the join is the only barrier
     }

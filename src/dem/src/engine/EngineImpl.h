@@ -1,8 +1,8 @@
 // EngineImpl.h
 // The engine, written once over an execution policy (OmpExecution with g++, CudaExecution
 // with nvcc): owns grains, pairs and walls, and runs the velocity-Verlet step
-//     kick-drift -> (rebuild if a grain moved more than skin/2) -> grain and pair forces ->
-//     gather-kick (which also does the next step's kick-drift)
+//     kick-drift -> (rebuild if a grain moved more than skin/2) -> pair forces ->
+//     gather-kick (per-grain forces, the pairs' sums, the kicks and the next step's drift)
 // Walls are few and live on the host. Read-back, coupling and restart are in EngineIo.h.
 #pragma once
 
@@ -100,9 +100,9 @@ public:
                 rebuild();
             }
             computeForces(dt);
-            wallsFinishStep(dt);
             const bool last = s + 1 == nSteps;
-            moved2 = Exec::maxOf(n, GatherKick{grains_.view(), pairs_.view(), dt, !last});
+            moved2 = Exec::maxOf(n, gatherKick(dt, dt, !last));
+            wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
                 wallsKickDrift(dt);
             time_ += dt;
@@ -167,21 +167,27 @@ private:
                                          m.tangentialDamping, frictional ? m.friction : 0.0, dt);
     }
 
-    //- Per-grain and per-pair loads for GatherKick. historyDt: time step of the tangential
-    //- spring increment (0: evaluate without advancing).
+    //- Per-pair loads for GatherKick. historyDt: time step of the tangential spring increment
+    //- (0: evaluate without advancing).
     void computeForces(double historyDt)
     {
-        GrainForceKernel grainKernel{grains_.view(),
-                                     wallsView(),
-                                     law(params_.grainWall, historyDt),
-                                     law(params_.grainWall, historyDt, false),
-                                     {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
-                                     params_.viscousDrag,
-                                     fluid_};
-        grainKernel.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
-        Exec::forEachGrainAndPair(grains_.size(), grainKernel, pairs_.count(),
-                                  PairForceKernel{grains_.view(), pairs_.view(), boxView(),
-                                                  law(params_.grainGrain, historyDt)});
+        Exec::forEachPair(pairs_.count(), PairForceKernel{grains_.view(), pairs_.view(), boxView(),
+                                                          law(params_.grainGrain, historyDt)});
+    }
+
+    //- The pass that ends a step: per-grain loads (gravity, drag, fluid, walls as they are now,
+    //- before wallsFinishStep), the pairs' loads, the kicks and, with driftNext, the next drift.
+    GatherKick gatherKick(double dt, double historyDt, bool driftNext)
+    {
+        GrainForceKernel grainLoads{grains_.view(),
+                                    wallsView(),
+                                    law(params_.grainWall, historyDt),
+                                    law(params_.grainWall, historyDt, false),
+                                    {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                                    params_.viscousDrag,
+                                    fluid_};
+        grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
+        return GatherKick{grains_.view(), pairs_.view(), grainLoads, dt, driftNext};
     }
 
     WallsView wallsView() const
@@ -244,7 +250,7 @@ private:
         rebuild();
         Exec::forEach(n, PackGrains{grains_.view()});
         computeForces(0.0);
-        Exec::forEach(n, GatherKick{grains_.view(), pairs_.view(), 0.0, false});
+        Exec::maxOf(n, gatherKick(0.0, 0.0, false));
         forcesStale_ = false;
     }
 

@@ -1,8 +1,8 @@
 // StepKernels.h
-// The force kernels of a velocity-Verlet step, written once for both backends: per grain
-// gravity, drag, fluid force and walls (GrainForceKernel), per pair of the half list the contact
-// law (PairForceKernel, loads to PairView::reaction); GatherKick (IntegrationKernels.h) sums
-// both in a fixed order.
+// The force kernels of a velocity-Verlet step, written once for both backends: per pair of the
+// half list the contact law (PairForceKernel, loads to PairView::reaction); GatherKick adds per
+// grain gravity, drag, fluid force and walls (GrainForceKernel) and the pairs' loads in a fixed
+// order, then kicks and drifts.
 #pragma once
 
 #include "kernels/IntegrationKernels.h"
@@ -53,8 +53,8 @@ struct FluidForceOnGrains
     }
 };
 
-//- Per grain: gravity, drag, fluid force and walls, written to GrainView::packedForce for
-//- GatherKick, which adds the pairs' loads.
+//- Per grain: gravity, drag, fluid force and walls at the packed state (evaluated by GatherKick,
+//- before it adds the pairs' loads).
 struct GrainForceKernel
 {
     GrainView g;
@@ -64,23 +64,18 @@ struct GrainForceKernel
     double drag;
     FluidView fluid;
 
-    DEM_HD void operator()(int i) const
+    //- Sets force and torque to grain i's loads (updates its wall history and wall forces).
+    DEM_HD void add(int i, Vector3d& force, Vector3d& torque) const
     {
         const Vector3d x = g.packedPosition(i), v = g.packedVelocity(i),
                        omega = g.packedAngularVelocity(i);
         const double r = g.packedRadius(i);
         const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
         const double mass = 1.0 / g.packedVelocities[8L * i + 3];
-        Vector3d force = mass * gvec - drag * v; // m g - c v
-        Vector3d torque = Vector3d::Zero();
+        force = mass * gvec - drag * v; // m g - c v
+        torque = Vector3d::Zero();
         force += fluid.force(x, r, gvec);
         addWallContacts(i, x, v, omega, r, force, torque);
-        double* partial = g.packedForce + 8L * i; // summed up by GatherKick
-        for (int c = 0; c < 3; ++c)
-        {
-            partial[c] = force[c];
-            partial[4 + c] = torque[c];
-        }
     }
 
     DEM_HD void addWallContacts(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
@@ -177,6 +172,69 @@ struct PairForceKernel
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
         pairs.touching[p] = touching ? 1 : 0;
+    }
+};
+
+//- Ends a step: per-grain loads (grainLoads: gravity, drag, fluid, walls), then the loads of
+//- the pairs the grain owns and of those it is partner of (fixed order: results do not depend
+//- on the thread count), the second half kick and, within a step() call, the next step's kick
+//- and drift in the same pass.
+struct GatherKick
+{
+    GrainView g;
+    PairView pairs;
+    GrainForceKernel grainLoads;
+    double dt;
+    bool driftNext; //!< false: last step of the call, update the SoA fields
+
+    DEM_HD double operator()(int j) const
+    {
+        Vector3d force, torque;
+        grainLoads.add(j, force, torque);
+        // Pairs j owns, then pairs j is the partner of (open pairs hold zero loads).
+        const long cs = pairs.stride();
+        for (int p = pairs.start[j]; p < pairs.start[j + 1]; ++p)
+        {
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[6 * cs];
+            force += Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+        }
+        for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
+        {
+            const int p = pairs.incomingPair[q];
+            if (p < 0) // cannot happen: the search is symmetric
+                continue;
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[7 * cs];
+            force -= Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+        }
+        const int flag = g.flag[j];
+        double* vw = g.packedVelocities + 8L * j;
+        double* xr = g.packedPositionRadius + 4L * j;
+        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        if (!driftNext)
+        {
+            g.force.store(j, force);
+            g.torque.store(j, torque);
+            g.velocity.store(j, v);
+            g.angularVelocity.store(j, omega);
+            g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
+            g.pack(j);
+            return 0.0;
+        }
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = x[c];
+            vw[c] = v[c];
+            vw[4 + c] = omega[c];
+        }
+        const double* b = g.packedPositionAtBuild + 4L * j;
+        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
     }
 };
 

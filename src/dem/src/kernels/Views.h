@@ -59,7 +59,6 @@ struct GrainView
     double* packedPositionRadius = nullptr;
     double* packedVelocities = nullptr;
     double* packedPositionAtBuild = nullptr;
-    double* packedForce = nullptr; //!< (fx, fy, fz, 0, tx, ty, tz, 0) of the owner loop
 
     DEM_HD void pack(int i) const
     {
