@@ -28,6 +28,14 @@ __global__ void forEachKernel(F f, int n)
 }
 
 template <class F>
+__global__ void forEachPairKernel(F f, long n)
+{
+    const long i = long(blockIdx.x) * blockDim.x + threadIdx.x;
+    if (i < n)
+        f(i);
+}
+
+template <class F>
 __global__ void forEachStoreKernel(F f, int n, double* out)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -64,6 +72,15 @@ struct CudaExecution
         if (n <= 0)
             return;
         forEachKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(f, n);
+        checkCuda(cudaGetLastError(), "kernel launch");
+    }
+
+    template <class F>
+    static void forEachPair(long n, const F& f)
+    {
+        if (n <= 0)
+            return;
+        forEachPairKernel<<<int((n + kBlock - 1) / kBlock), kBlock>>>(f, n);
         checkCuda(cudaGetLastError(), "kernel launch");
     }
 

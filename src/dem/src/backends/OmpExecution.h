@@ -1,7 +1,8 @@
 // OmpExecution.h
 // CPU backend of the kernels: Thrust's OpenMP system for storage, sorting and scans, plain
-// OpenMP loops (static schedule) for the per-grain kernels. Reductions are deterministic for
-// a given thread count, so a restarted run repeats the uninterrupted one bit for bit.
+// OpenMP loops (static schedule) for the per-grain kernels. Results do not depend on the thread
+// count (sums run over fixed blocks), so a restarted run repeats the uninterrupted one bit for
+// bit.
 #pragma once
 
 #include <thrust/system/omp/execution_policy.h>
@@ -39,6 +40,22 @@ struct OmpExecution
             f(i);
     }
 
+    //- Per-pair kernels: straight-line bodies, vectorised across consecutive items. Vector and
+    //- scalar (remainder) iterations give the same bits: the CPU build does not contract a*b+c
+    //- into fused multiply-adds (-ffp-contract=off), so where a thread's range starts does not
+    //- change any result.
+    template <class F>
+    static void forEachPair(long n, const F& f)
+    {
+#pragma omp parallel if (n >= kParallelThreshold)
+        {
+            const F local = f; // members become loop invariants
+#pragma omp for simd schedule(static) nowait
+            for (long i = 0; i < n; ++i)
+                local(i);
+        } // the join is the only barrier
+    }
+
     //- Kernels that add into shared cells: serial on the CPU (deterministic, and cheap next to
     //- a fluid step).
     template <class F>
@@ -59,20 +76,21 @@ struct OmpExecution
         return result;
     }
 
-    //- Sum of f(i) in an order fixed by n and the thread count.
+    //- Sum of f(i) in an order fixed by n alone: kSumBlocks partial sums over fixed ranges,
+    //- added in order, whatever the thread count.
+    static constexpr int kSumBlocks = 64;
     template <class F>
     static double sumOf(int n, const F& f)
     {
-        const int threads = n >= kParallelThreshold ? omp_get_max_threads() : 1;
-        std::vector<double> partial(threads, 0.0);
-#pragma omp parallel num_threads(threads)
+        double partial[kSumBlocks];
+#pragma omp parallel for schedule(static) if (n >= kParallelThreshold)
+        for (int b = 0; b < kSumBlocks; ++b)
         {
-            const int t = omp_get_thread_num(), used = omp_get_num_threads();
-            const long first = long(n) * t / used, last = long(n) * (t + 1) / used;
+            const long first = long(n) * b / kSumBlocks, last = long(n) * (b + 1) / kSumBlocks;
             double s = 0.0;
             for (long i = first; i < last; ++i)
                 s += f(int(i));
-            partial[t] = s;
+            partial[b] = s;
         }
         double sum = 0.0;
         for (double s : partial)

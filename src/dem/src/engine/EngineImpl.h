@@ -1,7 +1,8 @@
 // EngineImpl.h
 // The engine, written once over an execution policy (OmpExecution with g++, CudaExecution
 // with nvcc): owns grains, pairs and walls, and runs the velocity-Verlet step
-//     kick-drift -> (rebuild if a grain moved more than skin/2) -> forces -> gather-kick
+//     kick-drift -> (rebuild if a grain moved more than skin/2) -> pair forces ->
+//     gather-kick (per-grain forces, the pairs' sums, the kicks and the next step's drift)
 // Walls are few and live on the host. Read-back, coupling and restart are in EngineIo.h.
 #pragma once
 
@@ -98,10 +99,10 @@ public:
                 Exec::forEach(n, UnpackGrains{grains_.view()});
                 rebuild();
             }
-            Exec::forEach(n, forceKernel(dt));
-            wallsFinishStep(dt);
+            computeForces(dt);
             const bool last = s + 1 == nSteps;
-            moved2 = Exec::maxOf(n, GatherKick{grains_.view(), pairs_.view(), dt, !last});
+            moved2 = Exec::maxOf(n, gatherKick(dt, dt, !last));
+            wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
                 wallsKickDrift(dt);
             time_ += dt;
@@ -166,26 +167,31 @@ private:
 
     static LinearSpringContact law(const ContactMaterial& m, double dt, bool frictional = true)
     {
-        return LinearSpringContact{
-            m.normalStiffness,   m.tangentialStiffness,         m.normalDamping,
-            m.tangentialDamping, frictional ? m.friction : 0.0, dt};
+        return LinearSpringContact::make(m.normalStiffness, m.tangentialStiffness, m.normalDamping,
+                                         m.tangentialDamping, frictional ? m.friction : 0.0, dt);
     }
 
-    //- historyDt: time step of the tangential spring increment (0: evaluate without advancing).
-    ForceKernel forceKernel(double historyDt)
+    //- Per-pair loads for GatherKick. historyDt: time step of the tangential spring increment
+    //- (0: evaluate without advancing).
+    void computeForces(double historyDt)
     {
-        ForceKernel k{grains_.view(),
-                      pairs_.view(),
-                      boxView(),
-                      wallsView(),
-                      law(params_.grainGrain, historyDt),
-                      law(params_.grainWall, historyDt),
-                      law(params_.grainWall, historyDt, false),
-                      {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
-                      params_.viscousDrag,
-                      fluid_};
-        k.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
-        return k;
+        Exec::forEachPair(pairs_.count(), PairForceKernel{grains_.view(), pairs_.view(), boxView(),
+                                                          law(params_.grainGrain, historyDt)});
+    }
+
+    //- The pass that ends a step: per-grain loads (gravity, drag, fluid, walls as they are now,
+    //- before wallsFinishStep), the pairs' loads, the kicks and, with driftNext, the next drift.
+    GatherKick gatherKick(double dt, double historyDt, bool driftNext)
+    {
+        GrainForceKernel grainLoads{grains_.view(),
+                                    wallsView(),
+                                    law(params_.grainWall, historyDt),
+                                    law(params_.grainWall, historyDt, false),
+                                    {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                                    params_.viscousDrag,
+                                    fluid_};
+        grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
+        return GatherKick{grains_.view(), pairs_.view(), grainLoads, dt, driftNext};
     }
 
     WallsView wallsView() const
@@ -247,8 +253,8 @@ private:
         const int n = grains_.size();
         rebuild();
         Exec::forEach(n, PackGrains{grains_.view()});
-        Exec::forEach(n, forceKernel(0.0));
-        Exec::forEach(n, GatherKick{grains_.view(), pairs_.view(), 0.0, false});
+        computeForces(0.0);
+        Exec::maxOf(n, gatherKick(0.0, 0.0, false));
         forcesStale_ = false;
     }
 

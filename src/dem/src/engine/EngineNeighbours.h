@@ -109,11 +109,13 @@ void EngineImpl<Exec>::rebuild()
         pairs_.swap(oldPairs_);
         throw Error(msg.str());
     }
+    pairs_.owner.resize(pairCount);
     pairs_.partner.resize(pairCount);
     pairs_.history.resize(3 * kHistoryVectors * pairCount);
-    pairs_.reaction.resize(6 * pairCount);
-    pairs_.touching.assign(pairCount, 1); // unknown: the force kernel clears what is open
+    pairs_.reaction.resize(kReactionComponents * pairCount); // every entry set by the force pass
+    pairs_.touching.resize(pairCount);
     Exec::forEach(n, FillOwnedPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
+                                    thrust::raw_pointer_cast(pairs_.owner.data()),
                                     thrust::raw_pointer_cast(pairs_.partner.data())});
 
     Exec::forEach(n, TransferHistory{pairs_.view(), oldPairs_.view(),

@@ -115,10 +115,16 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     fromHost(ints("pairs.incomingStart"), pairs_.incomingStart);
     fromHost(ints("pairs.incomingPair"), pairs_.incomingPair);
     fromHost(entry(s.reals, "pairs.history"), pairs_.history);
-    pairs_.reaction.assign(6 * pairs_.partner.size(), 0.0);
+    pairs_.reaction.assign(kReactionComponents * pairs_.partner.size(), 0.0);
     pairs_.touching.assign(pairs_.partner.size(), 1);
+    pairs_.owner.resize(pairs_.partner.size());
     if (pairs_.history.size() != 3 * kHistoryVectors * pairs_.partner.size())
         throw Error("importState: pair history and pair list sizes disagree");
+    if (pairs_.start.empty() || long(pairs_.start.back()) != long(pairs_.partner.size()))
+        throw Error("importState: pair starts and pair list sizes disagree");
+    Exec::forEach(int(pairs_.start.size()) - 1,
+                  FillOwners{thrust::raw_pointer_cast(pairs_.start.data()),
+                             thrust::raw_pointer_cast(pairs_.owner.data())});
 
     const std::vector<double>& walls = entry(s.reals, "walls.real");
     const std::vector<std::int64_t>& wallInts = entry(s.integers, "walls.int");

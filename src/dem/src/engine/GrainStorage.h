@@ -119,12 +119,10 @@ public:
             packedPositionRadius_.resize(4 * std::size_t(n_));
             packedVelocities_.resize(8 * std::size_t(n_));
             packedPositionAtBuild_.resize(4 * std::size_t(n_));
-            packedForce_.resize(8 * std::size_t(n_));
         }
         g.packedPositionRadius = thrust::raw_pointer_cast(packedPositionRadius_.data());
         g.packedVelocities = thrust::raw_pointer_cast(packedVelocities_.data());
         g.packedPositionAtBuild = thrust::raw_pointer_cast(packedPositionAtBuild_.data());
-        g.packedForce = thrust::raw_pointer_cast(packedForce_.data());
         return g;
     }
 
@@ -203,7 +201,7 @@ private:
     std::array<Vec<double>, kRealFieldCount> reals_;
     std::array<Vec<int>, kIntFieldCount> ints_;
     Vec<double> scratchReal_;
-    Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_, packedForce_;
+    Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_;
     Vec<int> scratchInt_;
 };
 

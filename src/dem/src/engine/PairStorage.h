@@ -1,7 +1,8 @@
 // PairStorage.h
-// RAII storage of the half neighbour list (CSR by owner), its per-pair state (contact history,
-// partner reactions) and the transposed list (pairs by partner). Grows with the packing; a
-// limit set by Parameters::maxPairsPerGrain is enforced with an error, never by dropping.
+// RAII storage of the half neighbour list (CSR by owner, plus each pair's owner), its per-pair
+// state (contact history, loads) and the transposed list (pairs by partner). Grows with the
+// packing; a limit set by Parameters::maxPairsPerGrain is enforced with an error, never by
+// dropping.
 #pragma once
 
 #include "kernels/Views.h"
@@ -17,11 +18,14 @@ struct PairStorage
     template <class T>
     using Vec = typename Exec::template Vector<T>;
 
-    Vec<int> start = Vec<int>(1, 0), partner, incomingStart = Vec<int>(1, 0), incomingPair;
+    Vec<int> start = Vec<int>(1, 0), owner, partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
     Vec<unsigned char> touching; //!< saves clearing history and reactions of open pairs
 
     long count() const { return long(partner.size()); }
+
+    static_assert(Exec::kPairMajor == kPairMajorLayout,
+                  "the execution policy and the kernels disagree on the pair layout");
 
     PairView view()
     {
@@ -29,8 +33,9 @@ struct PairStorage
         v.count = count();
         v.componentStride = Exec::kPairMajor ? 1 : v.count;
         v.historyPairStride = Exec::kPairMajor ? 3 * kHistoryVectors : 1;
-        v.reactionPairStride = Exec::kPairMajor ? 6 : 1;
+        v.reactionPairStride = Exec::kPairMajor ? kReactionComponents : 1;
         v.start = thrust::raw_pointer_cast(start.data());
+        v.owner = thrust::raw_pointer_cast(owner.data());
         v.partner = thrust::raw_pointer_cast(partner.data());
         v.history = thrust::raw_pointer_cast(history.data());
         v.reaction = thrust::raw_pointer_cast(reaction.data());
@@ -43,6 +48,7 @@ struct PairStorage
     void swap(PairStorage& other)
     {
         start.swap(other.start);
+        owner.swap(other.owner);
         partner.swap(other.partner);
         incomingStart.swap(other.incomingStart);
         incomingPair.swap(other.incomingPair);

@@ -1,9 +1,8 @@
 // IntegrationKernels.h
 // Velocity-Verlet integration kernels, written once for both backends:
 //   KickDrift   first half kick and drift of a step() call (from the SoA fields)
-//   GatherKick  adds the reactions of the pairs a grain is partner of (fixed order: results do
-//               not depend on the thread count), the second half kick and, within a step()
-//               call, the next step's kick and drift in the same pass
+//   GatherKick  (StepKernels.h) per-grain loads, the pairs' loads, the second half kick and,
+//               within a step() call, the next step's kick and drift in the same pass
 // Within a step() call the packed per-grain copies (GrainView::pack) are the current state,
 // so a pass touches three cache lines per grain instead of ~25 arrays; the SoA fields are
 // brought up to date at the end of the call and before a neighbour rebuild.
@@ -93,58 +92,6 @@ struct UnpackGrains
         g.position.store(i, g.packedPosition(i));
         g.velocity.store(i, g.packedVelocity(i));
         g.angularVelocity.store(i, g.packedAngularVelocity(i));
-    }
-};
-
-struct GatherKick
-{
-    GrainView g;
-    PairView pairs;
-    double dt;
-    bool driftNext; //!< false: last step of the call, update the SoA fields
-
-    DEM_HD double operator()(int j) const
-    {
-        const double* partial = g.packedForce + 8L * j;
-        Vector3d force(partial[0], partial[1], partial[2]),
-            torque(partial[4], partial[5], partial[6]);
-        const long cs = pairs.componentStride;
-        for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
-        {
-            const int p = pairs.incomingPair[q];
-            if (p < 0 || !pairs.touching[p]) // p < 0 cannot happen: the search is symmetric
-                continue;
-            const double* reaction = pairs.reactionOf(p);
-            force += Vector3d(reaction[0], reaction[cs], reaction[2 * cs]);
-            torque += Vector3d(reaction[3 * cs], reaction[4 * cs], reaction[5 * cs]);
-        }
-        const int flag = g.flag[j];
-        if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
-            g.impulseX[j] += dt * force.x();
-        double* vw = g.packedVelocities + 8L * j;
-        double* xr = g.packedPositionRadius + 4L * j;
-        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
-        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
-        if (!driftNext)
-        {
-            g.force.store(j, force);
-            g.torque.store(j, torque);
-            g.velocity.store(j, v);
-            g.angularVelocity.store(j, omega);
-            g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
-            g.pack(j);
-            return 0.0;
-        }
-        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
-        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
-        for (int c = 0; c < 3; ++c)
-        {
-            xr[c] = x[c];
-            vw[c] = v[c];
-            vw[4 + c] = omega[c];
-        }
-        const double* b = g.packedPositionAtBuild + 4L * j;
-        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
     }
 };
 

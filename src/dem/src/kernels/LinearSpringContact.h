@@ -24,6 +24,17 @@ struct LinearSpringContact
     double tangentialDamping = 0;
     double friction = 0;
     double timeStep = 0;
+    double inverseTangentialStiffness = 0; //!< 1 / tangentialStiffness (0 when that is 0)
+    //- 1 with a tangential spring (friction and k_t both nonzero), else 0: a factor rather than a
+    //- select, so that the pair loop vectorises.
+    double tangential = 0;
+
+    static LinearSpringContact make(double kn, double kt, double cn, double ct, double mu,
+                                    double dt)
+    {
+        return LinearSpringContact{
+            kn, kt, cn, ct, mu, dt, kt != 0.0 ? 1.0 / kt : 0.0, mu != 0.0 && kt != 0.0 ? 1.0 : 0.0};
+    }
 
     //- Force on grain i. n: unit normal from i towards j; overlap > 0; relativeVelocity:
     //- velocity of i's contact point minus j's. tangentialDisplacement (the contact's history)
@@ -32,55 +43,60 @@ struct LinearSpringContact
     DEM_HD Vector3d force(const Vector3d& n, double overlap, const Vector3d& relativeVelocity,
                           Vector3d& tangentialDisplacement) const
     {
+        Vector3d tangentialForce;
+        const double normalMagnitude =
+            forces(n, overlap, relativeVelocity, tangentialDisplacement, tangentialForce);
+        return tangentialForce - normalMagnitude * n;
+    }
+
+    //- The same law split into its parts: returns the normal magnitude (the force on i is
+    //- -magnitude n + tangentialForce). Branch-free (selects, no data-dependent branches), so
+    //- that the pair kernel vectorises across pairs: the rotation factor and the Coulomb cap
+    //- differ at random from contact to contact.
+    DEM_HD double forces(const Vector3d& n, double overlap, const Vector3d& relativeVelocity,
+                         Vector3d& tangentialDisplacement, Vector3d& tangentialForce) const
+    {
         const double approachSpeed = relativeVelocity.dot(n);
         const double normalMagnitude = normalStiffness * overlap + normalDamping * approachSpeed;
-        const Vector3d normalForce = -normalMagnitude * n;
-        if (friction == 0.0 || tangentialStiffness == 0.0)
-        {
-            tangentialDisplacement.setZero();
-            return normalForce;
-        }
         const Vector3d tangentialVelocity = relativeVelocity - approachSpeed * n;
 
         // Rotate the stored displacement into the current tangent plane, keeping its length.
         Vector3d xi = tangentialDisplacement;
         const double normalPart = xi.dot(n);
-        if (normalPart != 0.0)
-        {
-            const double lengthBefore2 = xi.squaredNorm();
-            xi -= normalPart * n;
-            const double normal2 = normalPart * normalPart;
-            // Restore the length: factor sqrt(1 + e), e = normal2 / lengthAfter2 ~ (rotation per
-            // step)^2. Below 1e-17 the factor rounds to exactly 1 (the common quasi-static case,
-            // no division); below 1e-4 the series is exact to round-off.
-            const double lengthAfter2 = lengthBefore2 - normal2;
-            if (lengthAfter2 > 0.0 && normal2 > 1e-17 * lengthAfter2)
-            {
-                const double e = normal2 / lengthAfter2;
-                xi *= e < 1e-4 ? 1.0 + e * (0.5 - 0.125 * e) : std::sqrt(1.0 + e);
-            }
-        }
+        const double normal2 = normalPart * normalPart;
+        const double lengthAfter2 = xi.squaredNorm() - normal2;
+        xi -= normalPart * n;
+        // Restore the length: factor sqrt(1 + e), e = normal2 / lengthAfter2 ~ (rotation per
+        // step)^2. Below 1e-17 the series rounds to exactly 1 (the common quasi-static case);
+        // below 1e-4 it is exact to round-off.
+        const bool rotated = lengthAfter2 > 0.0;
+        const double e = rotated ? normal2 / (rotated ? lengthAfter2 : 1.0) : 0.0;
+        const double series = 1.0 + e * (0.5 - 0.125 * e);
+        xi *= e < 1e-4 ? series : std::sqrt(1.0 + e);
         xi += tangentialVelocity * timeStep;
 
-        Vector3d tangentialForce =
-            -tangentialStiffness * xi - tangentialDamping * tangentialVelocity;
+        Vector3d ft = -tangentialStiffness * xi - tangentialDamping * tangentialVelocity;
         const double limit = friction * std::fabs(normalMagnitude);
-        const double magnitude2 = tangentialForce.squaredNorm();
-        if (magnitude2 > limit * limit)
+        const double magnitude2 = ft.squaredNorm();
+        // Gross slip: cap the force and shorten the spring to |xi| = mu |f_n| / k_t.
+        const bool slip = magnitude2 > limit * limit;
+        const double cap = limit / std::sqrt(slip ? magnitude2 : 1.0);
+        const double shorten = -cap * inverseTangentialStiffness;
+        for (int c = 0; c < 3; ++c)
         {
-            // Gross slip: cap the force and shorten the spring to |xi| = mu |f_n| / k_t.
-            tangentialForce *= limit / std::sqrt(magnitude2);
-            xi = -tangentialForce / tangentialStiffness;
+            tangentialDisplacement[c] = tangential * (slip ? shorten * ft[c] : xi[c]);
+            tangentialForce[c] = tangential * (slip ? cap * ft[c] : ft[c]);
         }
-        tangentialDisplacement = xi;
-        return normalForce + tangentialForce;
+        return normalMagnitude;
     }
 };
 
-//- Result of one contact: force and torque on i, torque on j.
+//- Result of one contact: force and torque on i, torque on j, and their parts (the torques are
+//- lever (n x f)).
 struct ContactLoads
 {
-    Vector3d forceOnI, torqueOnI, torqueOnJ;
+    Vector3d forceOnI, torqueOnI, torqueOnJ, nCrossF;
+    double leverI, leverJ;
 };
 
 //- Geometry and kinematics of two touching spheres (or sphere and wall: radiusJ = 0,
@@ -93,13 +109,17 @@ DEM_HD ContactLoads evaluateContact(const LinearSpringContact& law, const Vector
 {
     const double leverI = radiusI - 0.5 * overlap;
     const double leverJ = radiusJ - 0.5 * overlap;
-    const Vector3d relative =
-        velocityI - velocityJ + omegaI.cross(leverI * n) + omegaJ.cross(leverJ * n);
+    // omega_i x (l_i n) + omega_j x (l_j n) = (l_i omega_i + l_j omega_j) x n
+    const Vector3d relative = velocityI - velocityJ + (leverI * omegaI + leverJ * omegaJ).cross(n);
+    Vector3d tangentialForce;
+    const double normalMagnitude = law.forces(n, overlap, relative, history, tangentialForce);
     ContactLoads loads;
-    loads.forceOnI = law.force(n, overlap, relative, history);
-    const Vector3d nCrossF = n.cross(loads.forceOnI);
-    loads.torqueOnI = leverI * nCrossF;
-    loads.torqueOnJ = leverJ * nCrossF;
+    loads.forceOnI = tangentialForce - normalMagnitude * n;
+    loads.nCrossF = n.cross(tangentialForce); // n x n = 0
+    loads.leverI = leverI;
+    loads.leverJ = leverJ;
+    loads.torqueOnI = leverI * loads.nCrossF;
+    loads.torqueOnJ = leverJ * loads.nCrossF;
     return loads;
 }
 

@@ -156,12 +156,31 @@ struct FillOwnedPairs
 {
     NeighbourSearch search;
     const int* start;
+    int* owner;
     int* partner;
 
     DEM_HD void operator()(int i) const
     {
         int p = start[i];
-        search.forEachNeighbour(i, true, [&](int j) { partner[p++] = j; });
+        search.forEachNeighbour(i, true,
+                                [&](int j)
+                                {
+                                    owner[p] = i;
+                                    partner[p++] = j;
+                                });
+    }
+};
+
+//- Each pair's owner from the CSR starts (after an import).
+struct FillOwners
+{
+    const int* start;
+    int* owner;
+
+    DEM_HD void operator()(int i) const
+    {
+        for (int p = start[i]; p < start[i + 1]; ++p)
+            owner[p] = i;
     }
 };
 
@@ -218,8 +237,7 @@ struct TransferHistory
             double* h = pairs.historyOf(p);
             const double* oldH = found < 0 ? nullptr : oldPairs.historyOf(found);
             for (int c = 0; c < 3 * kHistoryVectors; ++c)
-                h[c * pairs.componentStride] =
-                    oldH ? sign * oldH[c * oldPairs.componentStride] : 0.0;
+                h[c * pairs.stride()] = oldH ? sign * oldH[c * oldPairs.stride()] : 0.0;
         }
     }
 

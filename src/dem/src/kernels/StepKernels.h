@@ -1,7 +1,8 @@
 // StepKernels.h
-// The force kernel of a velocity-Verlet step, written once for both backends: per owner grain
-// gravity, drag, fluid force, walls and the owned half of the pair list; the partner's share
-// of each pair goes to PairView::reaction for GatherKick (IntegrationKernels.h).
+// The force kernels of a velocity-Verlet step, written once for both backends: per pair of the
+// half list the contact law (PairForceKernel, loads to PairView::reaction); GatherKick adds per
+// grain gravity, drag, fluid force and walls (GrainForceKernel) and the pairs' loads in a fixed
+// order, then kicks and drifts.
 #pragma once
 
 #include "kernels/IntegrationKernels.h"
@@ -52,34 +53,29 @@ struct FluidForceOnGrains
     }
 };
 
-struct ForceKernel
+//- Per grain: gravity, drag, fluid force and walls at the packed state (evaluated by GatherKick,
+//- before it adds the pairs' loads).
+struct GrainForceKernel
 {
     GrainView g;
-    PairView pairs;
-    BoxView box;
     WallsView walls;
-    LinearSpringContact grainLaw, wallLaw, frictionlessWallLaw;
+    LinearSpringContact wallLaw, frictionlessWallLaw;
     double gravity[3];
     double drag;
     FluidView fluid;
 
-    DEM_HD void operator()(int i) const
+    //- Sets force and torque to grain i's loads (updates its wall history and wall forces).
+    DEM_HD void add(int i, Vector3d& force, Vector3d& torque) const
     {
         const Vector3d x = g.packedPosition(i), v = g.packedVelocity(i),
                        omega = g.packedAngularVelocity(i);
         const double r = g.packedRadius(i);
         const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
-        Vector3d force = gvec / g.packedVelocities[8L * i + 3] - drag * v; // m g - c v
-        Vector3d torque = Vector3d::Zero();
+        const double mass = 1.0 / g.packedVelocities[8L * i + 3];
+        force = mass * gvec - drag * v; // m g - c v
+        torque = Vector3d::Zero();
         force += fluid.force(x, r, gvec);
         addWallContacts(i, x, v, omega, r, force, torque);
-        addOwnedPairs(i, x, v, omega, r, force, torque);
-        double* partial = g.packedForce + 8L * i; // summed up by GatherKick
-        for (int c = 0; c < 3; ++c)
-        {
-            partial[c] = force[c];
-            partial[4 + c] = torque[c];
-        }
     }
 
     DEM_HD void addWallContacts(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
@@ -117,47 +113,130 @@ struct ForceKernel
         if (touching != wasTouching)
             g.wallContacts[i] = touching;
     }
+};
 
-    DEM_HD void addOwnedPairs(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
-                              double r, Vector3d& force, Vector3d& torque) const
+//- Per pair of the half list: the contact law when the spheres overlap, else zero loads and
+//- a cleared history. Straight-line code (selects, no branches) so that the CPU loop
+//- vectorises across pairs; one thread per pair on the GPU. Owner and partner sums are
+//- GatherKick's, in a fixed order.
+struct PairForceKernel
+{
+    GrainView g;
+    PairView pairs;
+    BoxView box;
+    LinearSpringContact law;
+
+    //- a[k], a[k + s], a[k + 2 s], loaded by value: indexed loads (not references into the
+    //- arrays) are what GCC turns into vector gathers.
+    DEM_HD static Vector3d load(const double* a, long k, long s = 1)
     {
-        const long cs = pairs.componentStride;
-        for (int p = pairs.start[i]; p < pairs.start[i + 1]; ++p)
+        const double x = a[k], y = a[k + s], z = a[k + 2 * s];
+        return Vector3d(x, y, z);
+    }
+
+    DEM_HD void operator()(long p) const
+    {
+        const long i = pairs.owner[p], j = pairs.partner[p];
+        const double* xr = g.packedPositionRadius;
+        const double* vw = g.packedVelocities;
+        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
+        const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
+        const double sumRadii = ri + rj;
+        const double distance2 = d.squaredNorm();
+        const bool touching = distance2 < sumRadii * sumRadii;
+        const double distance = std::sqrt(touching ? distance2 : 1.0);
+        const Vector3d n = d * (1.0 / distance);
+        const double overlap = sumRadii - distance;
+
+        const long cs = pairs.stride();
+        const long h0 = p * (kPairMajorLayout ? 3 * kHistoryVectors : pairs.historyPairStride);
+        const long r0 = p * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
+        double* h = pairs.history;
+        double* out = pairs.reaction;
+        Vector3d history = load(h, h0, cs);
+        const ContactLoads loads =
+            evaluateContact(law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j),
+                            load(vw, 8 * i + 4), load(vw, 8 * j + 4), history);
+        // Select, then store unconditionally (conditional stores would not vectorise).
+        double value[3 * kHistoryVectors + kReactionComponents];
+        for (int c = 0; c < 3; ++c)
         {
-            const int j = pairs.partner[p];
-            const Vector3d d = box.separation(x, g.packedPosition(j));
-            const double rj = g.packedRadius(j);
-            const double sumRadii = r + rj;
-            const double distance2 = d.squaredNorm();
-            double* h = pairs.historyOf(p);
-            double* reaction = pairs.reactionOf(p);
-            if (distance2 >= sumRadii * sumRadii)
-            {
-                if (pairs.touching[p])
-                {
-                    for (int c = 0; c < 3 * kHistoryVectors; ++c)
-                        h[c * cs] = 0.0;
-                    pairs.touching[p] = 0;
-                }
-                continue;
-            }
-            pairs.touching[p] = 1;
-            const double inverseDistance = 1.0 / std::sqrt(distance2);
-            Vector3d history(h[0], h[cs], h[2 * cs]);
-            const ContactLoads loads = evaluateContact(
-                grainLaw, d * inverseDistance, sumRadii - distance2 * inverseDistance, r, rj, v,
-                g.packedVelocity(j), omega, g.packedAngularVelocity(j), history);
-            h[0] = history.x();
-            h[cs] = history.y();
-            h[2 * cs] = history.z();
-            force += loads.forceOnI;
-            torque += loads.torqueOnI;
-            for (int c = 0; c < 3; ++c)
-            {
-                reaction[c * cs] = -loads.forceOnI[c];
-                reaction[(3 + c) * cs] = loads.torqueOnJ[c];
-            }
+            value[c] = touching ? history[c] : 0.0;
+            value[3 + c] = touching ? loads.forceOnI[c] : 0.0;
+            value[6 + c] = touching ? loads.nCrossF[c] : 0.0;
         }
+        value[9] = touching ? loads.leverI : 0.0;
+        value[10] = touching ? loads.leverJ : 0.0;
+        for (int c = 0; c < 3; ++c)
+            h[h0 + c * cs] = value[c];
+        for (int c = 0; c < kReactionComponents; ++c)
+            out[r0 + c * cs] = value[3 + c];
+        pairs.touching[p] = touching ? 1 : 0;
+    }
+};
+
+//- Ends a step: per-grain loads (grainLoads: gravity, drag, fluid, walls), then the loads of
+//- the pairs the grain owns and of those it is partner of (fixed order: results do not depend
+//- on the thread count), the second half kick and, within a step() call, the next step's kick
+//- and drift in the same pass.
+struct GatherKick
+{
+    GrainView g;
+    PairView pairs;
+    GrainForceKernel grainLoads;
+    double dt;
+    bool driftNext; //!< false: last step of the call, update the SoA fields
+
+    DEM_HD double operator()(int j) const
+    {
+        Vector3d force, torque;
+        grainLoads.add(j, force, torque);
+        // Pairs j owns, then pairs j is the partner of (open pairs hold zero loads).
+        const long cs = pairs.stride();
+        for (int p = pairs.start[j]; p < pairs.start[j + 1]; ++p)
+        {
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[6 * cs];
+            force += Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+        }
+        for (int q = pairs.incomingStart[j]; q < pairs.incomingStart[j + 1]; ++q)
+        {
+            const int p = pairs.incomingPair[q];
+            if (p < 0) // cannot happen: the search is symmetric
+                continue;
+            const double* loads = pairs.reactionOf(p);
+            const double lever = loads[7 * cs];
+            force -= Vector3d(loads[0], loads[cs], loads[2 * cs]);
+            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+        }
+        const int flag = g.flag[j];
+        if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
+            g.impulseX[j] += dt * force.x();
+        double* vw = g.packedVelocities + 8L * j;
+        double* xr = g.packedPositionRadius + 4L * j;
+        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        if (!driftNext)
+        {
+            g.force.store(j, force);
+            g.torque.store(j, torque);
+            g.velocity.store(j, v);
+            g.angularVelocity.store(j, omega);
+            g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
+            g.pack(j);
+            return 0.0;
+        }
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = x[c];
+            vw[c] = v[c];
+            vw[4 + c] = omega[c];
+        }
+        const double* b = g.packedPositionAtBuild + 4L * j;
+        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
     }
 };
 

@@ -17,6 +17,11 @@ constexpr int kMaxWalls = 4;
 //- Vectors of history per contact (1: tangential spring; bonds will add more).
 constexpr int kHistoryVectors = 1;
 
+//- Per-pair loads of the last force evaluation (zero when open): force on the owner (3),
+//- n x tangential force (3), the owner's and the partner's lever arm. The owner's torque is
+//- lever_owner (n x f), the partner's lever_partner (n x f), its force minus the owner's.
+constexpr int kReactionComponents = 8;
+
 //- Three components with a stride (a component-blocked vector field).
 struct Vec3Array
 {
@@ -55,7 +60,6 @@ struct GrainView
     double* packedPositionRadius = nullptr;
     double* packedVelocities = nullptr;
     double* packedPositionAtBuild = nullptr;
-    double* packedForce = nullptr; //!< (fx, fy, fz, 0, tx, ty, tz, 0) of the owner loop
 
     DEM_HD void pack(int i) const
     {
@@ -89,6 +93,15 @@ struct GrainView
     }
 };
 
+//- Layout of per-pair vectors, fixed per backend at compile time so that the kernels' index
+//- arithmetic folds: pair by pair on the CPU (cache lines), component by component on the GPU
+//- (coalescing). The execution policies' kPairMajor must agree (checked by PairStorage).
+#if defined(__CUDACC__)
+constexpr bool kPairMajorLayout = false;
+#else
+constexpr bool kPairMajorLayout = true;
+#endif
+
 //- Half neighbour list (pair p owned by the lower index) and its per-pair state.
 struct PairView
 {
@@ -97,15 +110,24 @@ struct PairView
     //- (pair-major on the CPU for cache lines, component-major on the GPU for coalescing).
     long historyPairStride = 0, reactionPairStride = 0, componentStride = 0;
     const int* start = nullptr;         //!< N + 1: pairs of owner i are [start[i], start[i+1])
+    const int* owner = nullptr;         //!< the lower grain of each pair
     const int* partner = nullptr;       //!< the other grain, > owner
     double* history = nullptr;          //!< 3 * kHistoryVectors components, stride count
-    double* reaction = nullptr;         //!< 6 components: force and torque on the partner
+    double* reaction = nullptr;         //!< kReactionComponents (see PairLoads)
     unsigned char* touching = nullptr;  //!< 1: in contact at the last force evaluation
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
 
-    DEM_HD double* historyOf(long p) const { return history + p * historyPairStride; }
-    DEM_HD double* reactionOf(long p) const { return reaction + p * reactionPairStride; }
+    //- Distance between two components of one pair's vector (1 when pair-major).
+    DEM_HD long stride() const { return kPairMajorLayout ? 1 : componentStride; }
+    DEM_HD double* historyOf(long p) const
+    {
+        return history + p * (kPairMajorLayout ? 3 * kHistoryVectors : historyPairStride);
+    }
+    DEM_HD double* reactionOf(long p) const
+    {
+        return reaction + p * (kPairMajorLayout ? kReactionComponents : reactionPairStride);
+    }
 };
 
 //- Periodic box in x and y; z is never periodic.
