@@ -18,6 +18,16 @@ TEST_TEMPLATES = os.path.join(PROJECT, "tests", "cases")
 TEST_RUNS = os.path.join(PROJECT, "tests", "run")
 
 
+def copy_tutorial(tutorial, name):
+    """Copy tutorials/darcyDemFoam/<tutorial> without its output to
+    tests/run/<name> (replacing it); returns the path."""
+    path = os.path.join(TEST_RUNS, name)
+    shutil.rmtree(path, ignore_errors=True)
+    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", tutorial), path,
+                    ignore=shutil.ignore_patterns("stages", "*.png", "results.json", "log.*"))
+    return path
+
+
 class RunError(RuntimeError):
     """An application exited non-zero; carries the tail of its log."""
 
@@ -76,6 +86,14 @@ class Case:
         if rc != 0:
             raise RunError(f"{app} failed (exit {rc}) in {self.path}:\n" + text[-3000:])
         return text
+
+    def mesh(self, state_from=None):
+        """blockMesh; then, if given, a demState from another run into 0/ (the
+        grains start from that prepared packing with this case's settings)."""
+        self.run("blockMesh")
+        if state_from is not None:
+            shutil.copy(state_from, self.file("0/demState"))
+        return self
 
     def times(self):
         """Written time directories after 0 as sorted (time, name) pairs."""

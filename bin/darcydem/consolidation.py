@@ -64,10 +64,7 @@ class Study:
     def stage(self, name, app, state_from=None):
         c = Case(self.template, name, template_root=self.template_root, run_root=self.stages)
         c.set("system/controlDict", "application", app)
-        c.run("blockMesh")
-        if state_from is not None:
-            shutil.copy(state_from, c.file("0/demState"))
-        return c
+        return c.mesh(state_from)
 
     @staticmethod
     def last_state(case):

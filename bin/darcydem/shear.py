@@ -158,10 +158,7 @@ class ShearStudy:
         if app == "demFoam":
             os.remove(c.file("constant/darcyProperties"))
             os.remove(c.file("0/p"))
-        c.run("blockMesh")
-        if state_from is not None:
-            shutil.copy(state_from, c.file("0/demState"))
-        return c
+        return c.mesh(state_from)
 
     @staticmethod
     def last_time(case):
@@ -278,8 +275,8 @@ class ShearStudy:
         width = max(3, len(friction) // 25)
         smooth = hanning_smooth(friction, width)
         p_min, p_mean, p_max = (hanning_smooth(d[k], width) for k in ("pMin", "pMean", "pMax"))
-        steady_blocks = np.array_split(friction[strain >= 0.6 * strain[-1]], 8)
         steady = strain >= 0.6 * strain[-1]
+        steady_blocks = np.array_split(friction[steady], 8)
         early = (strain >= 0.005) & (strain <= 0.12)  # the first row is instantaneous
         if not early.any():  # a run too short for the window (smoke tests)
             early = np.ones_like(strain, dtype=bool)

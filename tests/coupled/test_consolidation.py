@@ -20,21 +20,16 @@ E_oed and one k cannot describe a packing whose stiffness and permeability
 are not uniform over its 14 grain layers."""
 
 import json
-import os
-import shutil
 
 import pytest
 
-from darcydem.case import PROJECT, TEST_RUNS
+from darcydem.case import copy_tutorial
 from darcydem.consolidation import Study
 
 
 @pytest.fixture(scope="module")
 def study():
-    path = os.path.join(TEST_RUNS, "consolidation")
-    shutil.rmtree(path, ignore_errors=True)
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", "consolidation"), path,
-                    ignore=shutil.ignore_patterns("stages", "*.png", "results.json", "log.*"))
+    path = copy_tutorial("consolidation", "consolidation")
     s = Study(path)
     s.run()
     s.plot()

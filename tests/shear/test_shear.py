@@ -31,22 +31,16 @@ grains' rattling."""
 
 import json
 import math
-import os
-import shutil
 
-import numpy as np
 import pytest
 
-from darcydem.case import PROJECT, TEST_RUNS
+from darcydem.case import copy_tutorial
 from darcydem.shear import IMPERMEABLE_KC, ShearStudy
 
 
 @pytest.fixture(scope="module")
 def study():
-    path = os.path.join(TEST_RUNS, "shear")
-    shutil.rmtree(path, ignore_errors=True)
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", "shear"), path,
-                    ignore=shutil.ignore_patterns("stages", "*.png", "results.json", "log.*"))
+    path = copy_tutorial("shear", "shear")
     s = ShearStudy(path, "test")
     r = s.run()
     r["dryHalfVelocity"] = s.shear("dry_half", velocity_factor=0.5)

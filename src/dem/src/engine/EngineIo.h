@@ -104,14 +104,16 @@ GrainData EngineImpl<Exec>::grains() const
         thrust::copy(perGrain.begin(), perGrain.end(), contacts.begin());
     }
     GrainData out;
-    auto vector3 = [&](int field, std::vector<double>& dest)
+    // component-blocked internal order -> interleaved add order
+    auto toAddOrder = [&](const std::vector<double>& h, std::vector<double>& dest)
     {
-        const std::vector<double> h = grains_.hostReal(field);
         dest.resize(3 * std::size_t(n));
         for (int i = 0; i < n; ++i)
             for (int d = 0; d < 3; ++d)
                 dest[3 * std::size_t(id[i]) + d] = h[std::size_t(d) * n + i];
     };
+    auto vector3 = [&](int field, std::vector<double>& dest)
+    { toAddOrder(grains_.hostReal(field), dest); };
     vector3(fPosition, out.position);
     vector3(fVelocity, out.velocity);
     vector3(fAngularVelocity, out.angularVelocity);
@@ -127,13 +129,10 @@ GrainData EngineImpl<Exec>::grains() const
                                   e.grains_.real(fRadius),
                                   fluid,
                                   {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
-                                  thrust::raw_pointer_cast(fluidForce.data())});
+                                  Vec3Array{thrust::raw_pointer_cast(fluidForce.data()), n}});
         std::vector<double> h(fluidForce.size());
         thrust::copy(fluidForce.begin(), fluidForce.end(), h.begin());
-        out.fluidForce.resize(h.size());
-        for (int i = 0; i < n; ++i)
-            for (int d = 0; d < 3; ++d)
-                out.fluidForce[3 * std::size_t(id[i]) + d] = h[3 * std::size_t(i) + d];
+        toAddOrder(h, out.fluidForce);
     }
     std::vector<double> origin;
     vector3(fOrigin, origin);

@@ -35,21 +35,19 @@ struct FluidView
     }
 };
 
-//- Read-back of the fluid force on every grain (internal order, 3 per grain interleaved).
+//- Read-back of the fluid force on every grain (internal order, like the grain fields).
 struct FluidForceOnGrains
 {
     Vec3Array position;
     const double* radius;
     FluidView fluid;
     double gravity[3];
-    double* out;
+    Vec3Array out;
 
     DEM_HD void operator()(int i) const
     {
-        const Vector3d f =
-            fluid.force(position(i), radius[i], Vector3d(gravity[0], gravity[1], gravity[2]));
-        for (int d = 0; d < 3; ++d)
-            out[3L * i + d] = f[d];
+        out.store(
+            i, fluid.force(position(i), radius[i], Vector3d(gravity[0], gravity[1], gravity[2])));
     }
 };
 
