@@ -227,8 +227,7 @@ private:
 
     double wallGrainForce(int w) const
     {
-        return Exec::sumOf(grains_.size(),
-                           ComponentOf{self().grains_.real(fWallForce) + long(w) * grains_.size()});
+        return Exec::sumOf(grains_.size(), WallForceOf{self().grains_.real(fWallState), w});
     }
 
     void wallsFinishStep(double dt)

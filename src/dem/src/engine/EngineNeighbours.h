@@ -60,7 +60,10 @@ CellGridView EngineImpl<Exec>::cellGrid()
             total *= cells.n[d];
         }
         if (total <= cellLimit)
+        {
+            cells.orderCells();
             return cells;
+        }
         cellSize *= 1.5;
     }
 }

@@ -11,6 +11,10 @@ namespace detail
 
 namespace stateDetail
 {
+//- Marks the layout of pairs.history in exported states: 2 = component by component
+//- (c * pairs + p) on every backend (1, before, was pair by pair on the CPU).
+constexpr std::int64_t kHistoryLayout = 2;
+
 template <class Vec, class T>
 void toHost(const Vec& v, std::vector<T>& out)
 {
@@ -64,7 +68,7 @@ SystemState EngineImpl<Exec>::exportState() const
         wallInts.insert(wallInts.end(), {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
                                          std::int64_t(w.spec.frictional)});
     }
-    s.integers["pairs.pairMajorLayout"] = {std::int64_t(Exec::kPairMajor)};
+    s.integers["pairs.historyLayout"] = {kHistoryLayout};
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
     s.integers["counters"] = {steps_,
                               std::int64_t(rebuilds_),
@@ -83,9 +87,10 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     if (counters.size() != 6)
         throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
                     " entries, expected 6");
-    if (entry(s.integers, "pairs.pairMajorLayout") != std::vector<std::int64_t>{Exec::kPairMajor})
-        throw Error("importState: the state was exported by another backend (contact history "
-                    "layout differs); import it into a System with the same backend");
+    if (entry(s.integers, "pairs.historyLayout") != std::vector<std::int64_t>{kHistoryLayout})
+        throw Error("importState: the state's contact history layout (pairs.historyLayout) is "
+                    "not this version's (" +
+                    std::to_string(kHistoryLayout) + ")");
     const int n = int(counters[5]);
     grains_.resizeForImport(n);
     for (int f = 0; f < kRealFieldCount; ++f)

@@ -2,7 +2,8 @@
 // RAII structure-of-arrays storage of the grains on one backend. Fields are registered in
 // one table (name, components), so appending grains, re-sorting, export and import treat every
 // field alike; a new per-grain quantity (e.g. capsule orientation, already present) is one
-// table entry. Components are blocked: component c of grain i is at c * N + i.
+// table entry. Components are blocked (component c of grain i at c * N + i) unless a field is
+// interleaved (grain i's components together, at i * components + c).
 #pragma once
 
 #include "kernels/Views.h"
@@ -34,9 +35,8 @@ enum RealField
     fRadius,
     fInverseMass,
     fInverseInertia,
-    fWallHistory,
-    fWallForce,
-    fImpulseX, //!< time integral of the x-force on a prescribed-velocity grain (else 0)
+    fWallState, //!< interleaved, see GrainView::wallState
+    fImpulseX,  //!< time integral of the x-force on a prescribed-velocity grain (else 0)
     kRealFieldCount
 };
 
@@ -53,6 +53,7 @@ struct FieldInfo
 {
     const char* name;
     int components;
+    bool interleaved = false;
 };
 
 inline const FieldInfo& realFieldInfo(int f)
@@ -69,8 +70,7 @@ inline const FieldInfo& realFieldInfo(int f)
                                                      {"radius", 1},
                                                      {"inverseMass", 1},
                                                      {"inverseInertia", 1},
-                                                     {"wallHistory", 3 * kMaxWalls},
-                                                     {"wallForce", kMaxWalls},
+                                                     {"wallState", kWallStateComponents, true},
                                                      {"impulseX", 1}};
     return table[f];
 }
@@ -81,6 +81,25 @@ inline const FieldInfo& intFieldInfo(int f)
         {"flag", 1}, {"id", 1}, {"image", 2}, {"wallContacts", 1}};
     return table[f];
 }
+
+inline namespace DEM_KERNEL_NS
+{
+//- out record i = in record order[i] (interleaved fields).
+template <class T>
+struct GatherRecords
+{
+    const T* in;
+    T* out;
+    const int* order;
+    int components;
+
+    DEM_HD void operator()(int i) const
+    {
+        for (int c = 0; c < components; ++c)
+            out[long(i) * components + c] = in[long(order[i]) * components + c];
+    }
+};
+} // namespace DEM_KERNEL_NS
 
 template <class Exec>
 class GrainStorage
@@ -109,8 +128,7 @@ public:
         g.radius = real(fRadius);
         g.inverseMass = real(fInverseMass);
         g.inverseInertia = real(fInverseInertia);
-        g.wallHistory = real(fWallHistory);
-        g.wallForce = real(fWallForce);
+        g.wallState = real(fWallState);
         g.impulseX = real(fImpulseX);
         g.flag = integer(fFlag);
         g.wallContacts = integer(fWallContacts);
@@ -138,9 +156,9 @@ public:
     {
         const int m = n_ + added;
         for (int f = 0; f < kRealFieldCount; ++f)
-            fromHost(reals_[f], merge(hostReal(f), reals[f], realFieldInfo(f).components, m));
+            fromHost(reals_[f], merge(hostReal(f), reals[f], realFieldInfo(f), m));
         for (int f = 0; f < kIntFieldCount; ++f)
-            fromHost(ints_[f], merge(hostInt(f), ints[f], intFieldInfo(f).components, m));
+            fromHost(ints_[f], merge(hostInt(f), ints[f], intFieldInfo(f), m));
         n_ = m;
     }
 
@@ -169,11 +187,17 @@ private:
         thrust::copy(h.begin(), h.end(), v.begin());
     }
     template <class T>
-    std::vector<T> merge(const std::vector<T>& old, const std::vector<T>& added, int components,
-                         int m) const
+    std::vector<T> merge(const std::vector<T>& old, const std::vector<T>& added,
+                         const FieldInfo& info, int m) const
     {
-        const int k = m - n_;
+        const int k = m - n_, components = info.components;
         std::vector<T> out(std::size_t(components) * m);
+        if (info.interleaved) // the added records follow the old ones
+        {
+            std::copy(old.begin(), old.end(), out.begin());
+            std::copy(added.begin(), added.end(), out.begin() + old.size());
+            return out;
+        }
         for (int c = 0; c < components; ++c)
         {
             std::copy(old.begin() + std::size_t(c) * n_, old.begin() + std::size_t(c + 1) * n_,
@@ -190,7 +214,17 @@ private:
         for (std::size_t f = 0; f < F; ++f)
         {
             scratch.resize(fields[f].size());
-            for (int c = 0; c < info(int(f)).components; ++c)
+            const int components = info(int(f)).components;
+            if (info(int(f)).interleaved)
+            {
+                Exec::forEach(n_,
+                              GatherRecords<T>{thrust::raw_pointer_cast(fields[f].data()),
+                                               thrust::raw_pointer_cast(scratch.data()),
+                                               thrust::raw_pointer_cast(order.data()), components});
+                fields[f].swap(scratch);
+                continue;
+            }
+            for (int c = 0; c < components; ++c)
                 thrust::gather(Exec::policy(), order.begin(), order.end(),
                                fields[f].begin() + long(c) * n_, scratch.begin() + long(c) * n_);
             fields[f].swap(scratch);

@@ -32,7 +32,6 @@ struct PairStorage
         PairView v;
         v.count = count();
         v.componentStride = Exec::kPairMajor ? 1 : v.count;
-        v.historyPairStride = Exec::kPairMajor ? 3 * kHistoryVectors : 1;
         v.reactionPairStride = Exec::kPairMajor ? kReactionComponents : 1;
         v.start = thrust::raw_pointer_cast(start.data());
         v.owner = thrust::raw_pointer_cast(owner.data());

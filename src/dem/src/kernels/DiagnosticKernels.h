@@ -67,6 +67,17 @@ struct ComponentOf
     DEM_HD double operator()(int i) const { return values[i]; }
 };
 
+//- Grain i's z-force on wall w (GrainView::wallState).
+struct WallForceOf
+{
+    const double* wallState;
+    int wall;
+    DEM_HD double operator()(int i) const
+    {
+        return wallState[long(i) * kWallStateComponents + 4 * wall + 3];
+    }
+};
+
 struct PrescribedForceX
 {
     GrainView g;

@@ -79,34 +79,30 @@ struct GrainForceKernel
     DEM_HD void addWallContacts(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
                                 double r, Vector3d& force, Vector3d& torque) const
     {
-        const long n = g.n;
         const int wasTouching = g.wallContacts[i];
         int touching = 0;
         for (int w = 0; w < walls.count; ++w)
         {
-            double* h = g.wallHistory + 3 * w * n + i;
+            double* h = g.wallState + long(i) * kWallStateComponents + 4 * w;
             const double overlap = r - (x.z() - walls.position[w]) * walls.normalZ[w];
             if (overlap <= 0.0)
             {
                 if (wasTouching & (1 << w))
-                {
-                    h[0] = h[n] = h[2 * n] = 0.0;
-                    g.wallForce[w * n + i] = 0.0;
-                }
+                    h[0] = h[1] = h[2] = h[3] = 0.0;
                 continue;
             }
             touching |= 1 << w;
-            Vector3d history(h[0], h[n], h[2 * n]);
+            Vector3d history(h[0], h[1], h[2]);
             const Vector3d normal(0.0, 0.0, -walls.normalZ[w]); // from the grain to the wall
             const ContactLoads loads = evaluateContact(
                 walls.frictional[w] ? wallLaw : frictionlessWallLaw, normal, overlap, r, 0.0, v,
                 Vector3d(0.0, 0.0, walls.velocity[w]), omega, Vector3d::Zero(), history);
             h[0] = history.x();
-            h[n] = history.y();
-            h[2 * n] = history.z();
+            h[1] = history.y();
+            h[2] = history.z();
+            h[3] = -loads.forceOnI.z();
             force += loads.forceOnI;
             torque += loads.torqueOnI;
-            g.wallForce[w * n + i] = -loads.forceOnI.z();
         }
         if (touching != wasTouching)
             g.wallContacts[i] = touching;
@@ -147,11 +143,11 @@ struct PairForceKernel
         const double overlap = sumRadii - distance;
 
         const long cs = pairs.stride();
-        const long h0 = p * (kPairMajorLayout ? 3 * kHistoryVectors : pairs.historyPairStride);
         const long r0 = p * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* h = pairs.history;
         double* out = pairs.reaction;
-        Vector3d history = load(h, h0, cs);
+        const long hs = pairs.historyStride();
+        Vector3d history = load(h, p, hs);
         const ContactLoads loads =
             evaluateContact(law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j),
                             load(vw, 8 * i + 4), load(vw, 8 * j + 4), history);
@@ -166,7 +162,7 @@ struct PairForceKernel
         value[9] = touching ? loads.leverI : 0.0;
         value[10] = touching ? loads.leverJ : 0.0;
         for (int c = 0; c < 3; ++c)
-            h[h0 + c * cs] = value[c];
+            h[p + c * hs] = value[c];
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
         pairs.touching[p] = touching ? 1 : 0;

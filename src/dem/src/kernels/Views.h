@@ -14,6 +14,7 @@ inline namespace DEM_KERNEL_NS
 
 //- Maximum number of walls (their contact history is stored per grain).
 constexpr int kMaxWalls = 4;
+constexpr int kWallStateComponents = 4 * kMaxWalls;
 //- Vectors of history per contact (1: tangential spring; bonds will add more).
 constexpr int kHistoryVectors = 1;
 
@@ -49,8 +50,11 @@ struct GrainView
     double* radius = nullptr;
     double* inverseMass = nullptr;
     double* inverseInertia = nullptr;
-    double* wallHistory = nullptr; //!< 3 * kMaxWalls components
-    double* wallForce = nullptr;   //!< kMaxWalls components: z-force of grain on wall
+    //- Per grain one record of kWallStateComponents (grain i at i * kWallStateComponents), per
+    //- wall w at 4 w: tangential history (x, y, z) and the grain's z-force on the wall. One
+    //- record per grain, not one array per component: the grains touching a wall are
+    //- scattered through the cell-sorted order, and this way each costs one cache line.
+    double* wallState = nullptr;
     int* flag = nullptr;
     int* wallContacts = nullptr; //!< bit w: touching wall w (history and force to clear)
     double* impulseX = nullptr;  //!< integral of F_x dt on prescribed-velocity grains
@@ -93,9 +97,11 @@ struct GrainView
     }
 };
 
-//- Layout of per-pair vectors, fixed per backend at compile time so that the kernels' index
-//- arithmetic folds: pair by pair on the CPU (cache lines), component by component on the GPU
-//- (coalescing). The execution policies' kPairMajor must agree (checked by PairStorage).
+//- Layout of the pairs' loads, fixed per backend at compile time so that the kernels' index
+//- arithmetic folds: pair by pair on the CPU (GatherKick reads a pair's loads from one cache
+//- line), component by component on the GPU (coalescing). The execution policies' kPairMajor
+//- must agree (checked by PairStorage). The contact history, read and written by the pair
+//- kernel only, is component by component on both (contiguous vector loads and stores).
 #if defined(__CUDACC__)
 constexpr bool kPairMajorLayout = false;
 #else
@@ -106,13 +112,13 @@ constexpr bool kPairMajorLayout = true;
 struct PairView
 {
     long count = 0;
-    //- Layout of per-pair vectors: component c of pair p at p * pairStride + c * componentStride
-    //- (pair-major on the CPU for cache lines, component-major on the GPU for coalescing).
-    long historyPairStride = 0, reactionPairStride = 0, componentStride = 0;
+    //- Layout of the loads: component c of pair p at p * reactionPairStride + c * componentStride
+    //- (pair-major on the CPU, component-major on the GPU).
+    long reactionPairStride = 0, componentStride = 0;
     const int* start = nullptr;         //!< N + 1: pairs of owner i are [start[i], start[i+1])
     const int* owner = nullptr;         //!< the lower grain of each pair
     const int* partner = nullptr;       //!< the other grain, > owner
-    double* history = nullptr;          //!< 3 * kHistoryVectors components, stride count
+    double* history = nullptr;          //!< 3 * kHistoryVectors components, c at c * count + p
     double* reaction = nullptr;         //!< kReactionComponents (see PairLoads)
     unsigned char* touching = nullptr;  //!< 1: in contact at the last force evaluation
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
@@ -120,10 +126,9 @@ struct PairView
 
     //- Distance between two components of one pair's vector (1 when pair-major).
     DEM_HD long stride() const { return kPairMajorLayout ? 1 : componentStride; }
-    DEM_HD double* historyOf(long p) const
-    {
-        return history + p * (kPairMajorLayout ? 3 * kHistoryVectors : historyPairStride);
-    }
+    //- Distance between two components of one pair's history.
+    DEM_HD long historyStride() const { return count; }
+    DEM_HD double* historyOf(long p) const { return history + p; }
     DEM_HD double* reactionOf(long p) const
     {
         return reaction + p * (kPairMajorLayout ? kReactionComponents : reactionPairStride);
