@@ -14,8 +14,31 @@ namespace
 class Friction : public BackendTest
 {
 protected:
-    const double r = 0.01;
+    const double r = 0.01, mu = 0.5, g0 = 9.81;
     double mass() const { return 2600.0 * sphereVolume(r); }
+
+    //- Grain-wall friction mu, damping ratio 0.3, gravity tilted by theta (the plane's slope).
+    dem::Parameters inclineParameters(double theta) const
+    {
+        dem::Parameters p = parameters();
+        p.grainWall.friction = mu;
+        p.grainWall.normalDamping = 2.0 * 0.3 * std::sqrt(p.grainWall.normalStiffness * mass());
+        p.grainWall.tangentialDamping = p.grainWall.normalDamping;
+        p.gravity = {g0 * std::sin(theta), 0.0, -g0 * std::cos(theta)};
+        p.timeStep = 0.05 * std::sqrt(mass() / p.grainWall.normalStiffness);
+        return p;
+    }
+
+    //- A grain that cannot rotate, at x = y = 0.5 and its static overlap (so the normal
+    //- spring does not ring).
+    dem::GrainInit block(const dem::Parameters& p, double theta) const
+    {
+        dem::GrainInit b;
+        b.radius = r;
+        b.flag = dem::GrainFlag::translationOnly;
+        b.position = {0.5, 0.5, r - mass() * g0 * std::cos(theta) / p.grainWall.normalStiffness};
+        return b;
+    }
 };
 
 } // namespace
@@ -53,24 +76,12 @@ TEST_P(Friction, ObliqueImpactInGrossSliding)
 
 TEST_P(Friction, BlockOnInclinedPlane)
 {
-    const double mu = 0.5, g0 = 9.81;
     for (const double thetaDegrees : {20.0, 35.0})
     {
         const double theta = thetaDegrees * M_PI / 180.0;
-        dem::Parameters p = parameters();
-        p.grainWall.friction = mu;
-        p.grainWall.normalDamping = 2.0 * 0.3 * std::sqrt(p.grainWall.normalStiffness * mass());
-        p.grainWall.tangentialDamping = p.grainWall.normalDamping;
-        p.gravity = {g0 * std::sin(theta), 0.0, -g0 * std::cos(theta)};
-        p.timeStep = 0.05 * std::sqrt(mass() / p.grainWall.normalStiffness);
+        const dem::Parameters p = inclineParameters(theta);
         dem::System s(p);
-        dem::GrainInit block;
-        block.radius = r;
-        block.flag = dem::GrainFlag::translationOnly;
-        // start at the static overlap so the normal spring does not ring
-        block.position = {0.5, 0.5,
-                          r - mass() * g0 * std::cos(theta) / p.grainWall.normalStiffness};
-        s.addGrain(block);
+        s.addGrain(block(p, theta));
         s.addWall(dem::WallSpec());
         const double t1 = 0.05, t2 = 0.15;
         s.step(int(t1 / p.timeStep));
@@ -103,23 +114,14 @@ TEST_P(Friction, BlockOnInclinedPlane)
 //- in the re-sort, the block would slip by about that much.
 TEST_P(Friction, WallHistorySurvivesResorting)
 {
-    const double mu = 0.5, g0 = 9.81, theta = 20.0 * M_PI / 180.0;
-    dem::Parameters p = parameters();
-    p.grainWall.friction = mu;
-    p.grainWall.normalDamping = 2.0 * 0.3 * std::sqrt(p.grainWall.normalStiffness * mass());
-    p.grainWall.tangentialDamping = p.grainWall.normalDamping;
-    p.gravity = {g0 * std::sin(theta), 0.0, -g0 * std::cos(theta)};
-    p.timeStep = 0.05 * std::sqrt(mass() / p.grainWall.normalStiffness);
+    const double theta = 20.0 * M_PI / 180.0;
+    const dem::Parameters p = inclineParameters(theta);
     dem::System s(p);
-    dem::GrainInit block;
-    block.radius = r;
-    block.flag = dem::GrainFlag::translationOnly;
-    block.position = {0.5, 0.5, r - mass() * g0 * std::cos(theta) / p.grainWall.normalStiffness};
-    s.addGrain(block);
+    s.addGrain(block(p, theta));
     s.addWall(dem::WallSpec());
     s.step(int(0.05 / p.timeStep));
     const dem::GrainData a = s.grains();
-    dem::GrainInit early = block; // lower x and y: an earlier cell than the block's
+    dem::GrainInit early = block(p, theta); // lower x and y: an earlier cell than the block's
     early.position[0] = early.position[1] = 0.1;
     s.addGrain(early);
     s.step(int(0.05 / p.timeStep));

@@ -116,7 +116,6 @@ void EngineImpl<Exec>::rebuild()
     pairs_.partner.resize(pairCount);
     pairs_.history.resize(3 * kHistoryVectors * pairCount);
     pairs_.reaction.resize(kReactionComponents * pairCount); // every entry set by the force pass
-    pairs_.touching.resize(pairCount);
     Exec::forEach(n, FillOwnedPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
                                     thrust::raw_pointer_cast(pairs_.owner.data()),
                                     thrust::raw_pointer_cast(pairs_.partner.data())});

@@ -121,7 +121,6 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     fromHost(ints("pairs.incomingPair"), pairs_.incomingPair);
     fromHost(entry(s.reals, "pairs.history"), pairs_.history);
     pairs_.reaction.assign(kReactionComponents * pairs_.partner.size(), 0.0);
-    pairs_.touching.assign(pairs_.partner.size(), 1);
     pairs_.owner.resize(pairs_.partner.size());
     if (pairs_.history.size() != 3 * kHistoryVectors * pairs_.partner.size())
         throw Error("importState: pair history and pair list sizes disagree");

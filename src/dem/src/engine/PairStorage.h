@@ -20,7 +20,6 @@ struct PairStorage
 
     Vec<int> start = Vec<int>(1, 0), owner, partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
-    Vec<unsigned char> touching; //!< saves clearing history and reactions of open pairs
 
     long count() const { return long(partner.size()); }
 
@@ -38,7 +37,6 @@ struct PairStorage
         v.partner = thrust::raw_pointer_cast(partner.data());
         v.history = thrust::raw_pointer_cast(history.data());
         v.reaction = thrust::raw_pointer_cast(reaction.data());
-        v.touching = thrust::raw_pointer_cast(touching.data());
         v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
         v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
         return v;
@@ -53,7 +51,6 @@ struct PairStorage
         incomingPair.swap(other.incomingPair);
         history.swap(other.history);
         reaction.swap(other.reaction);
-        touching.swap(other.touching);
     }
 };
 

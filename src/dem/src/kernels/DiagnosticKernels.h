@@ -38,26 +38,11 @@ struct TouchingPairs
                 const int p = pairs.incomingPair[q];
                 if (p < 0)
                     continue;
-                count += touchingOwnerOf(i, p);
+                count += touching(pairs.owner[p], i);
             }
         if (perGrain)
             perGrain[i] = count;
         return count;
-    }
-
-    DEM_HD int touchingOwnerOf(int j, int p) const
-    {
-        // the owner of pair p is the grain whose range [start[i], start[i+1]) holds p
-        int lo = 0, hi = g.n - 1;
-        while (lo < hi)
-        {
-            const int mid = (lo + hi + 1) / 2;
-            if (pairs.start[mid] <= p)
-                lo = mid;
-            else
-                hi = mid - 1;
-        }
-        return touching(lo, j);
     }
 };
 

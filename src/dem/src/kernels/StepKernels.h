@@ -165,7 +165,6 @@ struct PairForceKernel
             h[p + c * hs] = value[c];
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
-        pairs.touching[p] = touching ? 1 : 0;
     }
 };
 

@@ -120,7 +120,6 @@ struct PairView
     const int* partner = nullptr;       //!< the other grain, > owner
     double* history = nullptr;          //!< 3 * kHistoryVectors components, c at c * count + p
     double* reaction = nullptr;         //!< kReactionComponents (see PairLoads)
-    unsigned char* touching = nullptr;  //!< 1: in contact at the last force evaluation
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
 
