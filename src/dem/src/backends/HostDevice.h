@@ -32,5 +32,15 @@ DEM_HD void atomicAddDouble(double* address, double value)
 #endif
 }
 
+//- Ask for the cache line at address ahead of its use (CPU: a prefetch; GPU: nothing).
+DEM_HD void prefetch(const void* address)
+{
+#if defined(__CUDA_ARCH__)
+    (void)address;
+#else
+    __builtin_prefetch(address);
+#endif
+}
+
 } // namespace detail
 } // namespace dem

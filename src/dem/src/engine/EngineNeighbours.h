@@ -4,6 +4,7 @@
 // every contact's history over from the previous list.
 #pragma once
 
+#include <thrust/count.h>
 #include <thrust/reduce.h>
 
 #include <limits>
@@ -137,6 +138,9 @@ void EngineImpl<Exec>::rebuild()
                                        thrust::raw_pointer_cast(pairs_.partner.data()),
                                        thrust::raw_pointer_cast(pairs_.incomingStart.data()),
                                        thrust::raw_pointer_cast(pairs_.incomingPair.data())});
+    // GatherKick reads every entry without a check.
+    if (thrust::count(Exec::policy(), pairs_.incomingPair.begin(), pairs_.incomingPair.end(), -1))
+        throw Error("internal error: a neighbour pair is missing from the transposed list");
 
     const double* x = grains_.real(fPosition);
     thrust::copy(Exec::policy(), x, x + 3L * n, grains_.real(fPositionAtBuild));
