@@ -55,12 +55,9 @@ struct ComponentOf
 //- Grain i's z-force on wall w (GrainView::wallState).
 struct WallForceOf
 {
-    const double* wallState;
+    double* wallState;
     int wall;
-    DEM_HD double operator()(int i) const
-    {
-        return wallState[long(i) * kWallStateComponents + 4 * wall + 3];
-    }
+    DEM_HD double operator()(int i) const { return wallRecordOf(wallState, i, wall)[3]; }
 };
 
 struct PrescribedForceX

@@ -86,7 +86,7 @@ struct GrainForceKernel
         const double reach = 1.1 * g.packedPositionRadius[4L * i + 3]; // near contact
         for (int w = 0; w < walls.count; ++w)
             if ((z - walls.position[w]) * walls.normalZ[w] < reach)
-                prefetch(g.wallState + long(i) * kWallStateComponents + 4 * w);
+                prefetch(wallRecordOf(g.wallState, i, w));
     }
     static constexpr int kWallPrefetchDistance = 24; //!< grains ahead of the one summed
 
@@ -97,7 +97,7 @@ struct GrainForceKernel
         int touching = 0;
         for (int w = 0; w < walls.count; ++w)
         {
-            double* h = g.wallState + long(i) * kWallStateComponents + 4 * w;
+            double* h = wallRecordOf(g.wallState, i, w);
             const double overlap = r - (x.z() - walls.position[w]) * walls.normalZ[w];
             if (overlap <= 0.0)
             {

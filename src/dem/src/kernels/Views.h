@@ -14,7 +14,15 @@ inline namespace DEM_KERNEL_NS
 
 //- Maximum number of walls (their contact history is stored per grain).
 constexpr int kMaxWalls = 4;
-constexpr int kWallStateComponents = 4 * kMaxWalls;
+//- Per grain and wall: tangential history (x, y, z), then the grain's z-force on the wall.
+constexpr int kWallRecord = 4;
+constexpr int kWallStateComponents = kWallRecord * kMaxWalls;
+
+//- Grain i's record for wall w in a wallState array (GrainView::wallState).
+DEM_HD double* wallRecordOf(double* wallState, long i, int w)
+{
+    return wallState + i * kWallStateComponents + kWallRecord * w;
+}
 //- Vectors of history per contact (1: tangential spring; bonds will add more).
 constexpr int kHistoryVectors = 1;
 
@@ -50,10 +58,9 @@ struct GrainView
     double* radius = nullptr;
     double* inverseMass = nullptr;
     double* inverseInertia = nullptr;
-    //- Per grain one record of kWallStateComponents (grain i at i * kWallStateComponents), per
-    //- wall w at 4 w: tangential history (x, y, z) and the grain's z-force on the wall. One
-    //- record per grain, not one array per component: the grains touching a wall are
-    //- scattered through the cell-sorted order, and this way each costs one cache line.
+    //- Per grain kMaxWalls records of kWallRecord (wallRecordOf). Together per grain, not one
+    //- array per component: the grains touching a wall are scattered through the cell-sorted
+    //- order, and this way each costs one cache line.
     double* wallState = nullptr;
     int* flag = nullptr;
     int* wallContacts = nullptr; //!< bit w: touching wall w (history and force to clear)
