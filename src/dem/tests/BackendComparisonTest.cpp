@@ -153,8 +153,8 @@ TEST(CpuVsCuda, SamePackingSameTrajectoryWithinRoundOffGrowth)
     // |KE_a - KE_b| <= sum m (|v| |dv| + |dv|^2 / 2) with |dv| <= dvTol per component.
     double keTol = 0;
     for (std::size_t i = 0; i < cpu.mass.size(); ++i)
-        keTol += cpu.mass[i] * (std::sqrt(3.0) * norm(at(cpu.velocity, i)) * dvTol +
-                                1.5 * dvTol * dvTol);
+        keTol += cpu.mass[i] *
+                 (std::sqrt(3.0) * norm(at(cpu.velocity, i)) * dvTol + 1.5 * dvTol * dvTol);
     const double dx = maxDifference(cuda.unwrapped, cpu.unwrapped);
     const double dv = maxDifference(cuda.velocity, cpu.velocity);
     const double ke = kineticEnergy(cpu), dke = std::fabs(kineticEnergy(cuda) - ke);

@@ -9,6 +9,8 @@
 
 #include "dem/Error.h"
 
+#include <thrust/system_error.h>
+
 #include <cuda_runtime.h>
 
 #include <string>
@@ -35,10 +37,29 @@ inline void checkLaunch(const char* kernel, const char* file, int line)
 #endif
 }
 
+//- Thrust reports a failed CUDA call (also an earlier kernel's fault, seen when it synchronises)
+//- as thrust::system_error; at the engine's synchronising calls that becomes a dem::Error too.
+template <class F>
+auto checkThrust(const F& f, const char* call, const char* file, int line)
+{
+    try
+    {
+        return f();
+    }
+    catch (const thrust::system_error& e)
+    {
+        throw Error(std::string("CUDA error at ") + file + ":" + std::to_string(line) + " in " +
+                    call + ": " + e.what());
+    }
+}
+
 } // namespace detail
 } // namespace dem
 
 //- Wrap every CUDA runtime call: DEM_CUDA_CHECK(cudaMemcpy(...)).
 #define DEM_CUDA_CHECK(call) ::dem::detail::checkCuda((call), #call, __FILE__, __LINE__)
+//- Around a Thrust call that synchronises: DEM_THRUST_CHECK(thrust::reduce(...)).
+#define DEM_THRUST_CHECK(call)                                                                     \
+    ::dem::detail::checkThrust([&] { return call; }, #call, __FILE__, __LINE__)
 //- After every kernel launch: DEM_CUDA_CHECK_LAUNCH("forEachKernel").
 #define DEM_CUDA_CHECK_LAUNCH(kernel) ::dem::detail::checkLaunch(kernel, __FILE__, __LINE__)

@@ -5,7 +5,8 @@
 // An engine owns one CudaExecution (EngineImpl::exec_): its Thrust policy draws every temporary
 // buffer from a DeviceMemoryCache, and the reductions that end each step write into a scratch
 // vector that only grows, so a step allocates no device memory after the first ones. Every
-// launch and runtime call is checked (CudaCheck.cuh).
+// launch and runtime call is checked (CudaCheck.cuh); the reductions, which end every step and
+// synchronise, turn a fault of the step's kernels into a dem::Error.
 #pragma once
 
 #include "backends/CudaCheck.cuh"
@@ -99,7 +100,7 @@ public:
         if (n <= 0)
             return 0.0;
         const double* v = valuesOf(n, f);
-        return thrust::reduce(policy(), v, v + n, 0.0, MaxOfDoubles());
+        return DEM_THRUST_CHECK(thrust::reduce(policy(), v, v + n, 0.0, MaxOfDoubles()));
     }
 
     template <class F>
@@ -108,7 +109,7 @@ public:
         if (n <= 0)
             return 0.0;
         const double* v = valuesOf(n, f);
-        return thrust::reduce(policy(), v, v + n, 0.0);
+        return DEM_THRUST_CHECK(thrust::reduce(policy(), v, v + n, 0.0));
     }
 
 private:
