@@ -1,6 +1,9 @@
 """darcyDemFoam on the CUDA backend against the same case on the CPU
 (tests/cases/grainColumn: 256 grains settling in a saturated periodic column
-under a stress-controlled lid, 100 fluid steps of 10 DEM steps each).
+under a stress-controlled lid, 300 fluid steps of 10 DEM steps each: the
+lowest grains meet the floor and each other, and the perturbed CPU run below
+has drifted 2000 times eta0 away by then, 1.5e-9 m; 0.05 s would be past the
+small-difference regime, millimetres apart).
 Skipped when no CUDA device answers.
 
 Why not bit for bit: nvcc fuses a*b+c into one rounding, the GPU deposits the
@@ -19,15 +22,14 @@ differences (checked first: those are far below the grains' overlaps, i.e.
 still round-off growing, not a different packing)."""
 
 import math
-import os
 
 import numpy as np
 import pytest
 
 from darcydem.case import Case
 
-END = 0.01          # s: 100 fluid steps of 1e-4 s
-DEM_STEPS = 1000    # DEM time step 1e-5 s (grainColumn's demProperties)
+END = 0.03          # s: 300 fluid steps of 1e-4 s
+DEM_STEPS = 3000    # DEM time step 1e-5 s (grainColumn's demProperties)
 
 
 def read_grains(path):
