@@ -42,6 +42,13 @@ def apply_backend(case_dir):
     path = os.path.join(case_dir, "constant", "demProperties")
     if backend is None or not os.path.exists(path):
         return
+    # By text when the line is there: foamDictionary would rewrite the whole
+    # file (comments dropped, numbers at its write precision).
+    text = open(path).read()
+    new, n = re.subn(r"(?m)^(backend\s+)\w+\s*;", r"\g<1>%s;" % backend, text)
+    if n == 1:
+        open(path, "w").write(new)
+        return
     subprocess.run(["foamDictionary", "-entry", "backend", "-set", backend, path],
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
