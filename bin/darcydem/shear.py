@@ -45,7 +45,7 @@ PAPER_SHEAR_VELOCITY = 2.32e-2  # [m/s]
 PAPER_HEIGHT = 0.5             # consolidated bed height, about [m]
 WATER_MU = 1.797e-3            # water at 0 C [Pa s]
 # The fluid bulk modulus scales with the grain stiffness as in the paper's
-# code (VALIDATION.md section 4): K_w = (2.2e9/36.4e9) k_n as a pressure.
+# code (doc/REFERENCES.md section 4): K_w = (2.2e9/36.4e9) k_n as a pressure.
 BULK_MODULUS_PER_STIFFNESS = 2.2e9 / 36.4e9
 
 
@@ -225,7 +225,7 @@ class ShearStudy:
         s = self.s
         if "shearVelocity" in s:
             return s["shearVelocity"]
-        # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, VALIDATION.md section 4)
+        # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, doc/REFERENCES.md section 4)
         gamma_dot = s["inertialNumber"] * math.sqrt(s["sigma0"] / 2600.0) / self.d
         return gamma_dot * self.height
 
