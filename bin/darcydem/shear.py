@@ -25,7 +25,6 @@ import argparse
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -33,7 +32,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.foamfiles import time_dirs
+from darcydem.foamfiles import grain_files, read_vtp, time_dirs
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -92,24 +91,6 @@ def hanning_smooth(y, width):
     w /= w.sum()
     padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
     return np.convolve(padded, w, mode="valid")
-
-
-def read_vtp_arrays(path, names):
-    """Arrays of an ASCII grains.vtp (the text before a DataArray's first
-    child element; VTK appends range information after the values)."""
-    text = open(path).read()
-    out = {}
-    for name in names:
-        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)' % name, text)
-        if not m:
-            raise KeyError(f"array {name} not in {path}")
-        out[name] = np.array([float(v) for v in m.group(1).split()])
-    m = re.search(r'<Points>\s*<DataArray[^>]*>([^<]*)', text)
-    out["position"] = np.array([float(v) for v in m.group(1).split()]).reshape(-1, 3)
-    for name in names:
-        if out[name].size == 3 * len(out["position"]):
-            out[name] = out[name].reshape(-1, 3)
-    return out
 
 
 class ShearStudy:
@@ -346,10 +327,9 @@ class ShearStudy:
 
     def displacement_profile(self, name):
         """Mean x-displacement of the grains in bins one diameter thick at
-        the last write (strain at the end of the case), from grains.vtp."""
+        the last write (strain at the end of the case), from its grains file."""
         c = self.curves[name]["case"]
-        g = read_vtp_arrays(c.file(os.path.join(self.last_time(c), "grains.vtp")),
-                            ["displacement", "radius"])
+        g = read_vtp(grain_files(c.path)[-1][1])
         z, ux = g["position"][:, 2], g["displacement"][:, 0]
         edges = np.arange(0, self.height + self.d, self.d)
         centres, means = [], []

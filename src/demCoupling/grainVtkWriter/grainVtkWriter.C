@@ -5,6 +5,7 @@
 
 #include "grainVtkWriter.H"
 #include "OFstream.H"
+#include "foamVtkSeriesWriter.H"
 #include "OSspecific.H"
 
 #include <vtkCellArray.h>
@@ -112,24 +113,36 @@ void Foam::grainVtkWriter::writeVtp
 }
 
 
-void Foam::grainVtkWriter::writePvd(const Time& runTime)
+void Foam::grainVtkWriter::writeSeries
+(
+    const fileName& seriesPath,
+    const fileName& vtp,
+    const scalar t
+)
 {
-    const instantList times = runTime.times();
-
-    OFstream os(runTime.path()/"grains.pvd");
-    os  << "<?xml version=\"1.0\"?>" << nl
-        << "<VTKFile type=\"Collection\" version=\"0.1\">" << nl
-        << "  <Collection>" << nl;
-    for (const instant& t : times)
+    if (vtp.path() != seriesPath.path())
     {
-        if (isFile(runTime.path()/t.name()/"grains.vtp"))
-        {
-            os  << "    <DataSet timestep=\"" << t.value() << "\" file=\""
-                << t.name() << "/grains.vtp\"/>" << nl;
-        }
+        FatalErrorInFunction
+            << vtp << " is not beside the series file " << seriesPath
+            << exit(FatalError);
     }
-    os  << "  </Collection>" << nl
-        << "</VTKFile>" << nl;
+
+    vtk::seriesWriter series;
+    series.load(seriesPath, true, t);
+    series.append(t, vtp);
+
+    const fileName tmp(seriesPath + ".tmp");
+    {
+        OFstream os(tmp);
+        os.precision(17);   // times round-trip exactly, as the time names
+        series.print(os);
+    }
+    if (!Foam::mv(tmp, seriesPath))
+    {
+        FatalErrorInFunction
+            << "could not rename " << tmp << " to " << seriesPath
+            << exit(FatalError);
+    }
 }
 
 
