@@ -53,6 +53,9 @@ def scaled_beta(kn):
     return 1.0 / (BULK_MODULUS_PER_STIFFNESS * kn)
 
 
+# Profiles p(z) per shear case, for the p(z, strain) maps (Fig. 11)
+PROFILES_PER_CASE = 100
+
 # kc of the two saturated cases [m^2]
 PERMEABLE_KC = 3.5e-13
 IMPERMEABLE_KC = 3.5e-15
@@ -158,6 +161,15 @@ class ShearStudy:
         case.set(c, "endTime", "%.12g" % end)
         case.set(c, "writeInterval", "%.12g" % (end / writes))
 
+    def profiles_every(self, case, end, count=PROFILES_PER_CASE):
+        """horizontalProfiles at least count times over the case, every so
+        many fluid steps (whole steps: a run-time interval would make
+        OpenFOAM adjust deltaT, which must stay a whole number of DEM steps)."""
+        steps = round(end / (self.s["subSteps"] * self.s["timeStep"]))
+        c = "system/controlDict"
+        case.set(c, "functions/profiles/writeControl", "timeStep")
+        case.set(c, "functions/profiles/writeInterval", max(1, steps // count))
+
     def prepare(self):
         """Settle a loose lattice, then consolidate at sigma0 until at rest."""
         s = self.s
@@ -245,6 +257,7 @@ class ShearStudy:
         # strain = top-layer displacement / current height: allow one diameter of dilation
         end = strain * (self.height + self.d) / v
         self.end_and_writes(c, end, s["writes"])
+        self.profiles_every(c, end)
         self.log(f"shearStudy: shear {name}: v = {v:.4g} m/s to strain {strain}"
                  + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s"))
         c.run(app)
@@ -312,14 +325,14 @@ class ShearStudy:
 
     # ---- figures --------------------------------------------------------------------------
     def profiles(self, name):
-        """(strain at each write, z, p[write, z], displacementX[write, z])."""
+        """(strain of each profile, z, p[profile, z]) from every profile the
+        horizontalProfiles function object wrote (profiles_every)."""
         c = self.curves[name]["case"]
         d = self.curves[name]["d"]
         rows = []
-        for t, tname in time_dirs(c.path):
+        for t, tname in time_dirs(c.file(os.path.join("postProcessing", "profiles"))):
             path = c.file(os.path.join("postProcessing", "profiles", tname, "profiles.dat"))
-            if os.path.exists(path):
-                rows.append((np.interp(t, d["t"], d["strain"]), np.loadtxt(path, ndmin=2)))
+            rows.append((np.interp(t, d["t"], d["strain"]), np.loadtxt(path, ndmin=2)))
         strain = np.array([r[0] for r in rows])
         z = rows[0][1][:, 0]
         p = np.array([r[1][:, 1] for r in rows])
