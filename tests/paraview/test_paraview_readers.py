@@ -13,12 +13,11 @@ import subprocess
 
 import numpy as np
 import pytest
+import vtkmodules.all as vtk   # python3-vtk9, from bin/install-dependencies
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from darcydem.case import Case
 from darcydem.foamfiles import grain_files, read_vtp
-
-vtk = pytest.importorskip("vtkmodules.all", reason="needs VTK's Python bindings (python3-vtk9)")
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 WRITE_TIMES = [0.01, 0.02]
 FIELDS = {"p": 1, "porosity": 1, "k": 1, "Us": 3, "qDarcy": 3}
