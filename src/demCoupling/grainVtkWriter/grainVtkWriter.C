@@ -94,8 +94,11 @@ void Foam::grainVtkWriter::writeVtp
     data->GetPointData()->AddArray(contacts);
     data->GetPointData()->AddArray(flags);
 
+    // written under a temporary name and renamed: a reader (ParaView
+    // following a running case) never sees a half-written file
+    const fileName tmp(path + ".tmp");
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(path.c_str());
+    writer->SetFileName(tmp.c_str());
     writer->SetInputData(data);
     if (ascii)
     {
@@ -105,7 +108,7 @@ void Foam::grainVtkWriter::writeVtp
     {
         writer->SetDataModeToBinary();
     }
-    if (!writer->Write())
+    if (!writer->Write() || !Foam::mv(tmp, path))
     {
         FatalErrorInFunction
             << "VTK could not write " << path << nl << exit(FatalError);
