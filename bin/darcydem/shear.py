@@ -163,8 +163,8 @@ class ShearStudy:
 
     def profiles_every(self, case, end, count=PROFILES_PER_CASE):
         """horizontalProfiles at least count times over the case, every so
-        many fluid steps (whole steps: a run-time interval would make
-        OpenFOAM adjust deltaT, which must stay a whole number of DEM steps)."""
+        many fluid steps (an adjustableRunTime interval would let OpenFOAM
+        adjust deltaT, which must stay a whole number of DEM steps)."""
         steps = round(end / (self.s["subSteps"] * self.s["timeStep"]))
         c = "system/controlDict"
         case.set(c, "functions/profiles/writeControl", "timeStep")
