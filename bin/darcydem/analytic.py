@@ -1,4 +1,4 @@
-"""Closed-form references of VALIDATION.md (computed, never pasted)."""
+"""Closed-form references of doc/REFERENCES.md (computed, never pasted)."""
 
 import numpy as np
 
@@ -34,7 +34,7 @@ def drained_column_cell_mean(z0, z1, T, H, terms=200):
 
 def degree_of_consolidation(Tv, terms=200):
     """Terzaghi: U(T_v) = 1 - sum 2/M^2 exp(-M^2 T_v), M = (2j+1) pi/2
-    (VALIDATION.md section 3)."""
+    (doc/REFERENCES.md section 3)."""
     j = np.arange(terms)
     M = (2 * j + 1) * np.pi / 2
     Tv = np.atleast_1d(Tv)[:, None]

@@ -1,5 +1,5 @@
 """Coupled consolidation of a saturated grain packing against Terzaghi
-(VALIDATION.md section 3), the procedure of Catalano et al. (2014):
+(doc/REFERENCES.md section 3), the procedure of Catalano et al. (2014):
 
   1. prepare   demFoam: grains settle under gravity and a stress-controlled
                lid at sigma0 (viscous drag to come to rest);

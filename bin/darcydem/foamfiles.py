@@ -1,5 +1,7 @@
-"""Read ASCII OpenFOAM output (fields, probes, plain entries) into numpy."""
+"""Read OpenFOAM output into numpy: ASCII fields, probes and plain entries,
+and the grains' VTK files (ASCII or binary, through VTK's own reader)."""
 
+import json
 import os
 import re
 
@@ -57,3 +59,33 @@ def time_dirs(case):
         if t > 0:
             out.append((t, d))
     return sorted(out)
+
+
+def read_vtp(path):
+    """Points and point arrays of a VTK XML PolyData file (.vtp, ASCII or
+    binary), read by VTK's vtkXMLPolyDataReader, the reader ParaView uses:
+    {"position": (n, 3), name: (n,) or (n, components)}."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    if not os.path.isfile(path) or not reader.CanReadFile(path):
+        raise ValueError(f"{path} is not a VTK XML PolyData file")
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    # copies: the numpy views would outlive the reader that owns the memory
+    out = {"position": np.array(vtk_to_numpy(data.GetPoints().GetData())).reshape(-1, 3)}
+    point_data = data.GetPointData()
+    for i in range(point_data.GetNumberOfArrays()):
+        array = point_data.GetArray(i)
+        out[array.GetName()] = np.array(vtk_to_numpy(array))
+    return out
+
+
+def grain_files(case):
+    """(time, path) of the grains' .vtp files in the order of the VTK file
+    series <case>/VTK/grains.vtp.series (JSON) that ParaView opens."""
+    series = os.path.join(case, "VTK", "grains.vtp.series")
+    with open(series) as f:
+        entries = json.load(f)["files"]
+    return [(e["time"], os.path.join(os.path.dirname(series), e["name"])) for e in entries]

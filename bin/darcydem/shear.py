@@ -27,7 +27,6 @@ import argparse
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -35,7 +34,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.foamfiles import time_dirs
+from darcydem.foamfiles import grain_files, read_vtp, time_dirs
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -47,7 +46,7 @@ PAPER_SHEAR_VELOCITY = 2.32e-2  # [m/s]
 PAPER_HEIGHT = 0.5             # consolidated bed height, about [m]
 WATER_MU = 1.797e-3            # water at 0 C [Pa s]
 # The fluid bulk modulus scales with the grain stiffness as in the paper's
-# code (VALIDATION.md section 4): K_w = (2.2e9/36.4e9) k_n as a pressure.
+# code (doc/REFERENCES.md section 4): K_w = (2.2e9/36.4e9) k_n as a pressure.
 BULK_MODULUS_PER_STIFFNESS = 2.2e9 / 36.4e9
 
 
@@ -55,6 +54,9 @@ def scaled_beta(kn):
     """Fluid compressibility scaled with the grain stiffness [1/Pa]."""
     return 1.0 / (BULK_MODULUS_PER_STIFFNESS * kn)
 
+
+# Profiles p(z) per shear case, for the p(z, strain) maps (Fig. 11)
+PROFILES_PER_CASE = 100
 
 # kc of the two saturated cases [m^2]
 PERMEABLE_KC = 3.5e-13
@@ -94,24 +96,6 @@ def hanning_smooth(y, width):
     w /= w.sum()
     padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
     return np.convolve(padded, w, mode="valid")
-
-
-def read_vtp_arrays(path, names):
-    """Arrays of an ASCII grains.vtp (the text before a DataArray's first
-    child element; VTK appends range information after the values)."""
-    text = open(path).read()
-    out = {}
-    for name in names:
-        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)' % name, text)
-        if not m:
-            raise KeyError(f"array {name} not in {path}")
-        out[name] = np.array([float(v) for v in m.group(1).split()])
-    m = re.search(r'<Points>\s*<DataArray[^>]*>([^<]*)', text)
-    out["position"] = np.array([float(v) for v in m.group(1).split()]).reshape(-1, 3)
-    for name in names:
-        if out[name].size == 3 * len(out["position"]):
-            out[name] = out[name].reshape(-1, 3)
-    return out
 
 
 class ShearStudy:
@@ -179,6 +163,15 @@ class ShearStudy:
         case.set(c, "endTime", "%.12g" % end)
         case.set(c, "writeInterval", "%.12g" % (end / writes))
 
+    def profiles_every(self, case, end, count=PROFILES_PER_CASE):
+        """horizontalProfiles at least count times over the case, every so
+        many fluid steps (an adjustableRunTime interval would let OpenFOAM
+        adjust deltaT, which must stay a whole number of DEM steps)."""
+        steps = round(end / (self.s["subSteps"] * self.s["timeStep"]))
+        c = "system/controlDict"
+        case.set(c, "functions/profiles/writeControl", "timeStep")
+        case.set(c, "functions/profiles/writeInterval", max(1, steps // count))
+
     def prepare(self):
         """Settle a loose lattice, then consolidate at sigma0 until at rest."""
         s = self.s
@@ -227,7 +220,7 @@ class ShearStudy:
         s = self.s
         if "shearVelocity" in s:
             return s["shearVelocity"]
-        # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, VALIDATION.md section 4)
+        # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, doc/REFERENCES.md section 4)
         gamma_dot = s["inertialNumber"] * math.sqrt(s["sigma0"] / 2600.0) / self.d
         return gamma_dot * self.height
 
@@ -266,6 +259,7 @@ class ShearStudy:
         # strain = top-layer displacement / current height: allow one diameter of dilation
         end = strain * (self.height + self.d) / v
         self.end_and_writes(c, end, s["writes"])
+        self.profiles_every(c, end)
         self.log(f"shearStudy: shear {name}: v = {v:.4g} m/s to strain {strain}"
                  + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s"))
         c.run(app)
@@ -333,14 +327,14 @@ class ShearStudy:
 
     # ---- figures --------------------------------------------------------------------------
     def profiles(self, name):
-        """(strain at each write, z, p[write, z], displacementX[write, z])."""
+        """(strain of each profile, z, p[profile, z]) from every profile the
+        horizontalProfiles function object wrote (profiles_every)."""
         c = self.curves[name]["case"]
         d = self.curves[name]["d"]
         rows = []
-        for t, tname in time_dirs(c.path):
+        for t, tname in time_dirs(c.file(os.path.join("postProcessing", "profiles"))):
             path = c.file(os.path.join("postProcessing", "profiles", tname, "profiles.dat"))
-            if os.path.exists(path):
-                rows.append((np.interp(t, d["t"], d["strain"]), np.loadtxt(path, ndmin=2)))
+            rows.append((np.interp(t, d["t"], d["strain"]), np.loadtxt(path, ndmin=2)))
         strain = np.array([r[0] for r in rows])
         z = rows[0][1][:, 0]
         p = np.array([r[1][:, 1] for r in rows])
@@ -348,10 +342,9 @@ class ShearStudy:
 
     def displacement_profile(self, name):
         """Mean x-displacement of the grains in bins one diameter thick at
-        the last write (strain at the end of the case), from grains.vtp."""
+        the last write (strain at the end of the case), from its grains file."""
         c = self.curves[name]["case"]
-        g = read_vtp_arrays(c.file(os.path.join(self.last_time(c), "grains.vtp")),
-                            ["displacement", "radius"])
+        g = read_vtp(grain_files(c.path)[-1][1])
         z, ux = g["position"][:, 2], g["displacement"][:, 0]
         edges = np.arange(0, self.height + self.d, self.d)
         centres, means = [], []

@@ -1,4 +1,4 @@
-"""Coupled consolidation against Terzaghi (VALIDATION.md section 3): runs the
+"""Coupled consolidation against Terzaghi (doc/REFERENCES.md section 3): runs the
 study of tutorials/darcyDemFoam/consolidation (prepare a packing, measure
 E_oed with a dry load step and k with steady flow through the fixed grains,
 then load it saturated, drained at the top, closed at the base) and compares

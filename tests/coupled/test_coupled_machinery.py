@@ -5,13 +5,13 @@ periodic column."""
 
 import filecmp
 import os
-import re
 import shutil
 
 import numpy as np
 import pytest
 
 from darcydem.case import Case
+from darcydem.foamfiles import grain_files, read_vtp
 
 
 def short_column(name, end=0.02, write=100):
@@ -45,6 +45,8 @@ def test_restart_is_bit_identical():
     assert "restart from" in log
     for f in ("demState", "p", "porosity", "Us", "ddt0(p)"):
         assert filecmp.cmp(a.file("0.02/" + f), b.file("0.02/" + f), shallow=False), f
+    # the grains' file series lists the rewritten time once
+    assert [t for t, _ in grain_files(b.path)] == [0.01, 0.02]
 
 
 def test_deposit_conserves_solid_volume_every_step():
@@ -61,17 +63,19 @@ def test_deposit_conserves_solid_volume_every_step():
 
 
 def test_paraview_output():
-    """grains.vtp at each write time with the documented arrays, listed in
-    grains.pvd; the grains' count matches the input file."""
+    """VTK/grains_<time>.vtp at each write time with the documented arrays,
+    listed with their times in the file series VTK/grains.vtp.series; the
+    grains' count matches the input file."""
     c = short_column("vtk_output")
     c.run("darcyDemFoam")
-    pvd = open(c.file("grains.pvd")).read()
-    assert re.findall(r'file="([^"]+)"', pvd) == ["0.01/grains.vtp", "0.02/grains.vtp"]
-    vtp = open(c.file("0.02/grains.vtp")).read()
-    assert 'NumberOfPoints="256"' in vtp
+    files = grain_files(c.path)
+    assert [(t, os.path.basename(f)) for t, f in files] == [
+        (0.01, "grains_0.01.vtp"), (0.02, "grains_0.02.vtp")]
+    g = read_vtp(files[-1][1])
+    assert len(g["position"]) == 256
     for name in ("radius", "velocity", "angularVelocity", "displacement", "force",
                  "fluidForce", "contactCount", "flag"):
-        assert f'Name="{name}"' in vtp, name
+        assert name in g, name
 
 
 def failing(name, edit, app="darcyDemFoam"):

@@ -4,23 +4,15 @@ A single fixed grain in a saturated column: with p = 0 it feels exactly the
 buoyancy -rho_f V g; in a steady linear pressure field (p fixed at top and
 base) it feels -V grad(p) - rho_f V g."""
 
-import re
-
 import numpy as np
 import pytest
 
 from darcydem.case import Case
+from darcydem.foamfiles import read_vtp
 
 RHO_F, G, R = 1000.0, 9.81, 0.01
 V = 4 / 3 * np.pi * R**3
 H = 0.4
-
-
-def vtp_array(path, name):
-    text = open(path).read()
-    # the values are the text before the first child element (VTK adds InformationKey ranges)
-    m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>([^<]*)' % name, text, re.S)
-    return np.array([float(v) for v in m.group(1).split()])
 
 
 def held_grain(name, p_base):
@@ -37,7 +29,7 @@ def held_grain(name, p_base):
     c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % p_base)
     c.run("blockMesh")
     c.run("darcyDemFoam")
-    return vtp_array(c.file("0.002/grains.vtp"), "fluidForce")
+    return read_vtp(c.file("VTK/grains_0.002.vtp"))["fluidForce"][0]
 
 
 def test_buoyancy_only_when_p_is_zero():

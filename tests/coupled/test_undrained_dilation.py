@@ -1,4 +1,4 @@
-"""Closed box, grains dilated by an imposed uniform expansion (VALIDATION.md
+"""Closed box, grains dilated by an imposed uniform expansion (doc/REFERENCES.md
 D4 with grains): with no flow between cells each cell is undrained and
     p - p0 = -(1/beta) [ln(phi/(1 - phi))] from phi0 to phi,
 so dilation lowers p. The expansion is imposed kinematically: grains on a

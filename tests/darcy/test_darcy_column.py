@@ -1,4 +1,4 @@
-"""Darcy pore-pressure solver against exact solutions (VALIDATION.md 1).
+"""Darcy pore-pressure solver against exact solutions (doc/REFERENCES.md section 1).
 
 Every test runs blockMesh and darcyDemFoam on a copy of tests/cases/darcyColumn
 (a 0.1 m column, 2 x 2 x nz cells, periodic sides, closed base, D = 0.0556 m^2/s).

@@ -8,7 +8,7 @@ Application
 Description
     Transient solver for the excess pore pressure p of a compressible fluid
     in a granular packing (Damsgaard et al. 2015, eqs 4-5 in the consistent
-    form of DESIGN.md section 4.2):
+    form of doc/EQUATIONS.md section 4):
 
         beta mu phi ddt(p) = div(k grad(p))
                            - mu/(1 - phi) (ddt(phi) + Us & grad(phi))

@@ -11,7 +11,8 @@ Description
     Cartesian mesh that sets the periodic box and the output grid). No pore
     fluid: no darcyProperties, no p. Used for packing preparation, dry shear
     and snow runs. Writes porosity and Us (the grains deposited on the mesh)
-    and the grains (demState, grains.vtp, grains.pvd) at write times.
+    and the grains (demState, grains, VTK/grains_<time>.vtp and its series)
+    at write times.
 
 \*---------------------------------------------------------------------------*/
 

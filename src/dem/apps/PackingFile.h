@@ -1,5 +1,5 @@
 // PackingFile.h
-// Reader of the benchmark packing files (../shared/bench/packings): a header line
+// Reader of the benchmark packing files (src/dem/bench/packings): a header line
 // "# L Lz N", then one grain per line "x y z r" in metres.
 #pragma once
 

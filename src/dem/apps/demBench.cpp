@@ -1,5 +1,5 @@
 // demBench.cpp
-// The standard DEM benchmark of ../shared/bench/README.md: a settled dense packing on a wall,
+// The standard DEM benchmark of src/dem/bench/README.md: a settled dense packing on a wall,
 // 1000 relaxation steps with a global drag of 612 N s/m, then exactly 2000 timed steps without
 // damping. The last line is machine-readable:
 //   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>

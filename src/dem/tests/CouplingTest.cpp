@@ -1,5 +1,5 @@
 // CouplingTest.cpp
-// Grain -> grid deposit and grid -> grain fluid force (DESIGN.md 4.3):
+// Grain -> grid deposit and grid -> grain fluid force (doc/EQUATIONS.md sections 6, 7):
 //  - deposited solid volume equals sum V_g to round-off, in a periodic box and next to walls;
 //  - a rigidly translating packing deposits exactly its velocity;
 //  - the predicted porosity equals the porosity of the grains moved by v dt_f;

@@ -1,5 +1,5 @@
 // FrictionTest.cpp
-// Tangential contact law against rigid-body references (VALIDATION.md 2):
+// Tangential contact law against rigid-body references (doc/REFERENCES.md section 2):
 //  - oblique sphere-wall impact in gross sliding: tangential restitution
 //    e_t = 1 - mu (1 + e) / tan(theta) and rebound spin w' = 5 mu (1 + e) V cos(theta) / (2 R);
 //  - a grain that cannot rotate on a plane inclined at theta (gravity tilted instead of the

@@ -1,5 +1,5 @@
 // ImpactTest.cpp
-// Normal impacts against the closed form of the linear spring-dashpot (VALIDATION.md 2):
+// Normal impacts against the closed form of the linear spring-dashpot (doc/REFERENCES.md 2):
 // two spheres and sphere-wall; contact duration, maximum overlap, peak force and restitution,
 // undamped and damped (unclipped dashpot, as implemented), each within 0.5 %.
 #include "TestSupport.h"

@@ -56,9 +56,22 @@ bool Foam::demCloud::writeObject
     writeDemState(dir/"demState", state);
 
     const dem::GrainData g(grains());
-    grainVtkWriter::writeVtp(dir/"grains.vtp", g, asciiOutput_);
     writeGrainsFile(dir/"grains", g);
-    grainVtkWriter::writePvd(runTime);
+
+    // ParaView files in <case>/VTK, where OpenFOAM's foamToVTK writes too:
+    // a VTK file series lists files beside it, not in the time directories
+    const fileName vtkDir(runTime.path()/"VTK");
+    mkDir(vtkDir);
+    const fileName vtp(vtkDir/("grains_" + runTime.timeName() + ".vtp"));
+    grainVtkWriter::writeVtp(vtp, g, asciiOutput_);
+    // the time as the directory names it (not runTime.value() with its
+    // round-off), the time ParaView's OpenFOAM reader gives the fields
+    grainVtkWriter::writeSeries
+    (
+        vtkDir/"grains.vtp.series",
+        vtp,
+        readScalar(runTime.timeName())
+    );
 
     return true;
 }

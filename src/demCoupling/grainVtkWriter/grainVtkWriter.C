@@ -5,6 +5,7 @@
 
 #include "grainVtkWriter.H"
 #include "OFstream.H"
+#include "foamVtkSeriesWriter.H"
 #include "OSspecific.H"
 
 #include <vtkCellArray.h>
@@ -93,8 +94,11 @@ void Foam::grainVtkWriter::writeVtp
     data->GetPointData()->AddArray(contacts);
     data->GetPointData()->AddArray(flags);
 
+    // written under a temporary name and renamed: a reader (ParaView
+    // following a running case) never sees a half-written file
+    const fileName tmp(path + ".tmp");
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(path.c_str());
+    writer->SetFileName(tmp.c_str());
     writer->SetInputData(data);
     if (ascii)
     {
@@ -104,7 +108,7 @@ void Foam::grainVtkWriter::writeVtp
     {
         writer->SetDataModeToBinary();
     }
-    if (!writer->Write())
+    if (!writer->Write() || !Foam::mv(tmp, path))
     {
         FatalErrorInFunction
             << "VTK could not write " << path << nl << exit(FatalError);
@@ -112,24 +116,36 @@ void Foam::grainVtkWriter::writeVtp
 }
 
 
-void Foam::grainVtkWriter::writePvd(const Time& runTime)
+void Foam::grainVtkWriter::writeSeries
+(
+    const fileName& seriesPath,
+    const fileName& vtp,
+    const scalar t
+)
 {
-    const instantList times = runTime.times();
-
-    OFstream os(runTime.path()/"grains.pvd");
-    os  << "<?xml version=\"1.0\"?>" << nl
-        << "<VTKFile type=\"Collection\" version=\"0.1\">" << nl
-        << "  <Collection>" << nl;
-    for (const instant& t : times)
+    if (vtp.path() != seriesPath.path())
     {
-        if (isFile(runTime.path()/t.name()/"grains.vtp"))
-        {
-            os  << "    <DataSet timestep=\"" << t.value() << "\" file=\""
-                << t.name() << "/grains.vtp\"/>" << nl;
-        }
+        FatalErrorInFunction
+            << vtp << " is not beside the series file " << seriesPath
+            << exit(FatalError);
     }
-    os  << "  </Collection>" << nl
-        << "</VTKFile>" << nl;
+
+    vtk::seriesWriter series;
+    series.load(seriesPath, true, t);
+    series.append(t, vtp);
+
+    const fileName tmp(seriesPath + ".tmp");
+    {
+        OFstream os(tmp);
+        os.precision(17);   // times round-trip exactly, as the time names
+        series.print(os);
+    }
+    if (!Foam::mv(tmp, seriesPath))
+    {
+        FatalErrorInFunction
+            << "could not rename " << tmp << " to " << seriesPath
+            << exit(FatalError);
+    }
 }
 
 

@@ -90,7 +90,7 @@ Foam::meshGrid::meshGrid(const fvMesh& mesh)
             << "Mesh " << mesh.polyMesh::instance()/polyMesh::meshSubDir
             << " is not a uniform Cartesian mesh (" << why << " at cell "
             << celli << ", centre " << mesh.C()[celli] << ")." << nl
-            << "The grain-to-mesh mapping (DESIGN.md 4.3) needs one blockMesh"
+            << "The grain-to-mesh mapping (doc/EQUATIONS.md 6) needs one blockMesh"
             << " hex block with uniform grading: axis-aligned cells of one"
             << " size (any dx, dy, dz)." << nl << exit(FatalError);
     };

@@ -26,7 +26,7 @@ enum class GrainFlag : std::int32_t
     translationOnly = 3     //!< free translation, no rotation (sliding blocks, tests)
 };
 
-//- Linear spring-dashpot contact with Coulomb friction (DESIGN.md 4.1).
+//- Linear spring-dashpot contact with Coulomb friction (doc/EQUATIONS.md section 1).
 struct ContactMaterial
 {
     double normalStiffness = 1.16e9;     //!< k_n [N/m]

@@ -83,7 +83,7 @@ public:
     int threadCount() const;         //!< CPU threads in use (1 for cuda)
     const Parameters& parameters() const;
 
-    // ---- fluid coupling (DESIGN.md 4.3) ---------------------------------------------------
+    // ---- fluid coupling (doc/EQUATIONS.md 6-7) -------------------------------------------------
     //- Deposit the grains on `grid` with trilinear weights to cell centres (mirrored at
     //- non-periodic sides, wrapped across periodic ones). Outputs (any may be nullptr, each
     //- grid.cellCount() long, meanVelocity 3 per cell interleaved):

@@ -1,5 +1,5 @@
 // CouplingKernels.h
-// Grain -> grid deposit of DESIGN.md 4.3: solid volume s V_g and volume-weighted velocity
+// Grain -> grid deposit (doc/EQUATIONS.md 6): solid volume s V_g and volume-weighted velocity
 // s V_g v scattered to the 8 nearest cell centres (optionally from the predicted position
 // x + v dt_f), then turned into porosity and mean velocity per cell.
 #pragma once

@@ -1,5 +1,5 @@
 // LinearSpringContact.h
-// Evaluator of the contact law of DESIGN.md 4.1 (Damsgaard et al. 2015, eqs 1-3): linear normal
+// Evaluator of the contact law (doc/EQUATIONS.md 1; Damsgaard et al. 2015, eqs 1-3): linear normal
 // spring with optional dashpot, tangential history spring rotated into the current tangent
 // plane with optional dashpot and a Coulomb cap that shortens the spring on slip. Shared by
 // grain-grain and grain-wall contacts, host and device.

@@ -1,6 +1,6 @@
 // TrilinearWeights.h
 // Trilinear weights of a point to the 8 surrounding cell centres of a uniform grid
-// (DESIGN.md 4.3): s = prod_d (1 - |x_d - x_c,d| / dx_d). Indices outside the grid wrap across
+// (doc/EQUATIONS.md 6): s = prod_d (1 - |x_d - x_c,d| / dx_d). Indices outside the grid wrap across
 // periodic sides and are mirrored at the others (a wall between the last centre and the
 // boundary), so the 8 weights always sum to 1 and deposited volume is conserved.
 #pragma once

@@ -24,7 +24,7 @@ namespace functionObjects
 
 void Foam::functionObjects::grainDiagnostics::writeFileHeader(Ostream& os)
 {
-    writeHeader(os, "Grain diagnostics (DESIGN.md section 5)");
+    writeHeader(os, "Grain diagnostics (doc/CASE-FORMAT.md, function objects)");
     writeCommented(os, "time");
     for
     (

@@ -1,0 +1,229 @@
+"""A finished coupled case seen as ParaView sees it, through the VTK readers
+ParaView itself uses (README.md, "Running a tutorial and looking at it"):
+vtkOpenFOAMReader on <case>.foam for the fields and vtkXMLPolyDataReader on
+the files of the series VTK/grains.vtp.series for the grains, then the
+README's recipe (Sphere glyphs scaled by radius with factor 2, coloured by
+displacement) rendered offscreen to a PNG that is checked and left in the
+run directory. Case: tests/cases/grainColumn, 256 grains settling in a
+saturated periodic column for 0.02 s, grains written in binary."""
+
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+import vtkmodules.all as vtk   # python3-vtk9, from bin/install-dependencies
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from darcydem.case import Case
+from darcydem.foamfiles import grain_files, read_vtp
+
+WRITE_TIMES = [0.01, 0.02]
+FIELDS = {"p": 1, "porosity": 1, "k": 1, "Us": 3, "qDarcy": 3}
+GRAIN_ARRAYS = {"radius": 1, "velocity": 3, "angularVelocity": 3, "displacement": 3,
+                "force": 3, "fluidForce": 3, "contactCount": 1, "flag": 1}
+# ParaView's OpenFOAM reader converts fields and points to 32-bit floats
+FLOAT32_EPS = 2.0**-24
+# the fluid's porosity is clamped to [porosityMin, porosityMax] (0.9 in the template): the
+# test opens the clamp to 1 - CLAMP_GAP so that the written porosity holds the whole
+# deposit (foamDictionary writes 6 digits)
+CLAMP_GAP = 1e-6
+
+
+@pytest.fixture(scope="module")
+def case():
+    c = Case("grainColumn", "paraview_readers")
+    c.set("system/controlDict", "endTime", 0.02)
+    c.set("system/controlDict", "writeInterval", 100)
+    c.set("constant/demProperties", "output/format", "binary")
+    c.set("constant/darcyProperties", "solidPhase/porosityMax", "%.6f" % (1 - CLAMP_GAP))
+    c.run("blockMesh")
+    c.run("darcyDemFoam")
+    open(c.file("paraview_readers.foam"), "w").close()   # what ParaView opens
+    return c
+
+
+@pytest.fixture(scope="module")
+def x_display():
+    """Debian's VTK renders offscreen only through an X display: a virtual
+    one (Xvfb, installed by bin/install-dependencies) unless one is set."""
+    if os.environ.get("DISPLAY"):
+        yield os.environ["DISPLAY"]
+        return
+    read_end, write_end = os.pipe()
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
+                               "1024x768x24", "-nolisten", "tcp"],
+                              pass_fds=(write_end,), stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    # Xvfb writes the number, then a newline: read both before closing (it stops
+    # if the newline cannot be written)
+    with os.fdopen(read_end) as numbers:
+        number = numbers.readline().strip()
+    if not number:
+        raise RuntimeError("Xvfb did not start (bin/install-dependencies installs it)")
+    os.environ["DISPLAY"] = ":" + number
+    yield os.environ["DISPLAY"]
+    del os.environ["DISPLAY"]
+    server.terminate()
+    server.wait()
+
+
+def input_grains(c):
+    return np.loadtxt(c.file("0/grains"), comments="#", ndmin=2)
+
+
+def open_foam(c):
+    reader = vtk.vtkOpenFOAMReader()
+    reader.SetFileName(c.file("paraview_readers.foam"))
+    reader.SkipZeroTimeOn()   # ParaView's default
+    reader.UpdateInformation()
+    return reader
+
+
+def test_openfoam_reader_steps_through_every_write(case):
+    """Every write time, the fields on all 40 cells, and the deposit seen
+    through the reader: sum over cells of (1 - porosity) V_cell is the
+    grains' volume (the deposit conserves it), with the radii from the
+    grains' file of the same time: fields and grains line up in time."""
+    reader = open_foam(case)
+    times = vtk_to_numpy(reader.GetTimeValues())
+    print(f"OpenFOAM reader times {times}")
+    assert times.tolist() == pytest.approx(WRITE_TIMES, rel=1e-12)
+    grains = grain_files(case.path)
+    assert [t for t, _ in grains] == times.tolist(), "grains and fields at other times"
+    for t, (_, grain_file) in zip(times, grains):
+        reader.UpdateTimeStep(t)
+        mesh = reader.GetOutput().GetBlock(0)
+        assert mesh.GetNumberOfCells() == 2 * 2 * 10
+        cells = mesh.GetCellData()
+        for name, components in FIELDS.items():
+            array = cells.GetArray(name)
+            assert array is not None, f"{name} missing at t = {t}"
+            assert array.GetNumberOfComponents() == components, name
+            assert np.all(np.isfinite(vtk_to_numpy(array))), name
+        porosity = vtk_to_numpy(cells.GetArray("porosity")).astype(float)
+        assert np.all((porosity > 0) & (porosity <= 1))
+        sizes = vtk.vtkCellSizeFilter()
+        sizes.SetInputData(mesh)
+        sizes.Update()
+        volume = vtk_to_numpy(sizes.GetOutput().GetCellData().GetArray("Volume"))
+        solid = np.sum((1 - porosity) * volume)
+        r = read_vtp(grain_file)["radius"]
+        expected = np.sum(4 / 3 * np.pi * r**3)
+        err = abs(solid - expected) / expected
+        # per cell: porosity rounded to float32 (porosity <= 1), the cell volume from
+        # float32 points (3 coordinates), and CLAMP_GAP of an empty cell counted as solid
+        bound = np.sum(volume) * (4 * FLOAT32_EPS + CLAMP_GAP) / expected
+        print(f"t = {t}: solid volume from porosity {solid:.9e} m^3, grains {expected:.9e} m^3,"
+              f" relative difference {err:.1e} (bound {bound:.1e})")
+        assert err < bound
+
+
+def test_grain_series_lists_every_write_with_all_arrays(case):
+    """The series ParaView opens lists one file per write time; each, read
+    by vtkXMLPolyDataReader (binary here), holds every grain of the input
+    with its radius unchanged and every documented array."""
+    series = json.load(open(case.file("VTK/grains.vtp.series")))
+    print(f"grains.vtp.series: {series}")
+    assert series["file-series-version"] == "1.0"
+    grains = grain_files(case.path)
+    assert [t for t, _ in grains] == WRITE_TIMES
+    initial = input_grains(case)
+    for t, path in grains:
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(path)
+        reader.Update()
+        data = reader.GetOutput()
+        assert data.GetNumberOfPoints() == len(initial), path
+        assert data.GetNumberOfVerts() == len(initial), path
+        points = data.GetPointData()
+        for name, components in GRAIN_ARRAYS.items():
+            array = points.GetArray(name)
+            assert array is not None, f"{name} missing in {path}"
+            assert array.GetNumberOfComponents() == components, name
+        radius = vtk_to_numpy(points.GetArray("radius"))
+        # the radii are written as doubles: the input's, exactly, in any order
+        assert np.array_equal(np.sort(radius), np.sort(initial[:, 3])), path
+        print(f"t = {t}: {data.GetNumberOfPoints()} grains in {os.path.basename(path)}")
+
+
+def render_grains(path, png, size=(800, 600)):
+    """The README's ParaView recipe with plain VTK: Sphere glyphs (radius 0.5)
+    scaled by 'radius' with factor 2, so that each sphere has the grain's
+    radius, coloured by the magnitude of 'displacement'; returns the image
+    as an (height, width, 3) array after writing it to png."""
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grains = reader.GetOutput()
+    grains.GetPointData().SetActiveScalars("radius")
+    sphere = vtk.vtkSphereSource()   # radius 0.5, as ParaView's Sphere glyph
+    sphere.SetThetaResolution(16)
+    sphere.SetPhiResolution(16)
+    glyphs = vtk.vtkGlyph3D()
+    glyphs.SetInputData(grains)
+    glyphs.SetSourceConnection(sphere.GetOutputPort())
+    glyphs.SetScaleModeToScaleByScalar()
+    glyphs.SetScaleFactor(2.0)
+    glyphs.SetColorModeToColorByScalar()
+    glyphs.OrientOff()
+    glyphs.Update()
+    # ParaView colours by a vector's magnitude: carry the displacement onto
+    # the glyphs (vtkGlyph3D copies point data) and map its magnitude
+    displacement = grains.GetPointData().GetArray("displacement")
+    magnitude = np.linalg.norm(vtk_to_numpy(displacement), axis=1)
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(glyphs.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("displacement")
+    mapper.GetLookupTable().SetVectorModeToMagnitude()
+    mapper.GetLookupTable().SetHueRange(0.667, 0.0)   # blue (least) to red (most)
+    mapper.SetScalarRange(magnitude.min(), magnitude.max())
+    mapper.ScalarVisibilityOn()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(1.0, 1.0, 1.0)
+    renderer.AddActor(actor)
+    renderer.GetActiveCamera().Elevation(-80)   # look along y at the column's side
+    renderer.ResetCamera()
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(*size)
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(png)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    image = grab.GetOutput()
+    width, height, _ = image.GetDimensions()
+    pixels = np.array(vtk_to_numpy(image.GetPointData().GetScalars())).reshape(height, width, 3)
+    window.Finalize()   # let go of the X display before the server stops
+    return pixels, magnitude
+
+
+def test_grains_render_as_coloured_spheres(case, x_display):
+    """The last write rendered offscreen as the README says: the image shows
+    spheres, not points: 256 grains drawn as one-pixel vertices would cover
+    at most 256 of the 480000 pixels (0.05 %); spheres of the grains' radii
+    in a view fitted to the column cover several per cent. They are
+    coloured by displacement: many colours."""
+    time, path = grain_files(case.path)[-1]
+    png = case.file(f"grains_{time:g}.png")
+    pixels, magnitude = render_grains(path, png)
+    print(f"rendered {path} to {png}")
+    background = np.all(pixels == 255, axis=2)
+    covered = 1 - background.mean()
+    colours = len(np.unique(pixels[~background], axis=0))
+    print(f"displacement magnitude {magnitude.min():.3e} .. {magnitude.max():.3e} m;"
+          f" non-background pixels {covered:.3f}, distinct colours {colours}")
+    assert magnitude.max() > magnitude.min() > -1, "no displacement to colour by"
+    assert covered > 0.02
+    assert colours > 10
