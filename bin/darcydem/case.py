@@ -17,6 +17,41 @@ PROJECT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file
 TEST_TEMPLATES = os.path.join(PROJECT, "tests", "cases")
 TEST_RUNS = os.path.join(PROJECT, "tests", "run")
 
+# DARCYDEM_BACKEND=cpu|cuda|auto sets the DEM backend of every case copied here
+# (constant/demProperties 'backend'), so the tests and the studies run on
+# either backend unchanged; unset, a case keeps its template's backend.
+BACKEND_VARIABLE = "DARCYDEM_BACKEND"
+BACKENDS = ("cpu", "cuda", "auto")
+
+
+def backend_override():
+    """The backend named by DARCYDEM_BACKEND, or None when it is unset."""
+    value = os.environ.get(BACKEND_VARIABLE, "").strip()
+    if not value:
+        return None
+    if value not in BACKENDS:
+        raise ValueError(f"{BACKEND_VARIABLE}={value!r} is not a DEM backend "
+                         f"(valid: {' '.join(BACKENDS)})")
+    return value
+
+
+def apply_backend(case_dir):
+    """Set 'backend' in case_dir/constant/demProperties from DARCYDEM_BACKEND
+    (nothing when the variable is unset or the case has no grains)."""
+    backend = backend_override()
+    path = os.path.join(case_dir, "constant", "demProperties")
+    if backend is None or not os.path.exists(path):
+        return
+    # By text when the line is there: foamDictionary would rewrite the whole
+    # file (comments dropped, numbers at its write precision).
+    text = open(path).read()
+    new, n = re.subn(r"(?m)^(backend\s+)\w+\s*;", r"\g<1>%s;" % backend, text)
+    if n == 1:
+        open(path, "w").write(new)
+        return
+    subprocess.run(["foamDictionary", "-entry", "backend", "-set", backend, path],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
 
 def copy_tutorial(tutorial, name):
     """Copy tutorials/darcyDemFoam/<tutorial> without its output to
@@ -25,6 +60,7 @@ def copy_tutorial(tutorial, name):
     shutil.rmtree(path, ignore_errors=True)
     shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", tutorial), path,
                     ignore=shutil.ignore_patterns("stages", "*.png", "results.json", "log.*"))
+    apply_backend(path)
     return path
 
 
@@ -39,6 +75,7 @@ class Case:
         shutil.rmtree(self.path, ignore_errors=True)
         shutil.copytree(os.path.join(template_root, template), self.path,
                         ignore=shutil.ignore_patterns("stages", "*.png", "log.*"))
+        apply_backend(self.path)
 
     @classmethod
     def existing(cls, path):

@@ -15,7 +15,9 @@
   5. the same with half the fluid (coupling) step.
 
 Every stage is a case directory under <study>/stages/<stage>, made from the
-template case in <study> (0/, constant/, system/).
+template case in <study> (0/, constant/, system/); DARCYDEM_BACKEND=cpu|cuda|auto
+sets the DEM backend of every stage (bin/darcydem/case.py), else the
+template's 'backend' holds.
 """
 
 import json

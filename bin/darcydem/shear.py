@@ -18,7 +18,9 @@ sections 2.4 and 3, run through real case directories:
                   the paper's stand-in for shearing 1, 10, 100 x slower.
 
 Every stage is a case directory under <study>/stages/<stage>, made from the
-template case in <study> (0/, constant/, system/). Sizes: SIZES below.
+template case in <study> (0/, constant/, system/); DARCYDEM_BACKEND=cpu|cuda|auto
+sets the DEM backend of every stage (bin/darcydem/case.py), else the
+template's 'backend' holds. Sizes: SIZES below.
 """
 
 import argparse

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -19,7 +21,37 @@ namespace
 void usage()
 {
     std::cerr << "usage: demBench --packing FILE [--relax-steps 1000] [--steps 2000] "
-                 "[--threads T] [--backend auto|cpu|cuda] [--skin 1e-5]\n";
+                 "[--threads T] [--backend auto|cpu|cuda] [--skin 1e-5] [--replicate NXxNY]\n"
+                 "--replicate 10x1: NX x NY copies of the periodic packing side by side, "
+                 "box NX L x NY L\n";
+}
+
+//- "NXxNY" (e.g. 10x1) as two positive counts.
+std::pair<int, int> parseReplicate(const std::string& text)
+{
+    int nx = 0, ny = 0, used = 0;
+    if (std::sscanf(text.c_str(), "%dx%d%n", &nx, &ny, &used) != 2 || used != int(text.size()) ||
+        nx < 1 || ny < 1)
+        throw dem::Error("--replicate '" + text +
+                         "': expected NXxNY with positive whole numbers, e.g. 10x1");
+    return {nx, ny};
+}
+
+//- The packing tiled nx x ny times across its periodic sides (the copies' contacts across the
+//- seams are those of the original across its periodic sides).
+void replicate(dem::Packing& packing, int nx, int ny)
+{
+    const std::vector<dem::GrainInit> cell = packing.grains;
+    packing.grains.clear();
+    packing.grains.reserve(cell.size() * std::size_t(nx) * std::size_t(ny));
+    for (int iy = 0; iy < ny; ++iy)
+        for (int ix = 0; ix < nx; ++ix)
+            for (dem::GrainInit g : cell)
+            {
+                g.position[0] += ix * packing.length;
+                g.position[1] += iy * packing.length;
+                packing.grains.push_back(g);
+            }
 }
 
 double processCpuSeconds()
@@ -53,6 +85,7 @@ int main(int argc, char** argv)
     // grain at 1e-4 m).
     double skin = 1e-5, friction = 0.5;
     dem::Backend backend = dem::Backend::automatic;
+    std::pair<int, int> copies{1, 1};
     try
     {
         for (int a = 1; a < argc; ++a)
@@ -76,6 +109,8 @@ int main(int argc, char** argv)
                 backend = parseBackend(value());
             else if (arg == "--skin")
                 skin = std::stod(value());
+            else if (arg == "--replicate")
+                copies = parseReplicate(value());
             else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
                 friction = std::stod(value());
             else if (arg == "-h" || arg == "--help")
@@ -93,14 +128,15 @@ int main(int argc, char** argv)
         }
 
         const double density = 2600.0;
-        const dem::Packing packing = dem::readPacking(packingFile, density);
+        dem::Packing packing = dem::readPacking(packingFile, density);
+        replicate(packing, copies.first, copies.second);
         dem::Parameters p;
         p.grainGrain = {1.16e9, 1.16e9, 0.0, 0.0, friction};
         p.grainWall = p.grainGrain;
         p.defaultDensity = density;
         p.gravity = {0.0, 0.0, -9.81};
         p.boxLower = {0.0, 0.0};
-        p.boxUpper = {packing.length, packing.length};
+        p.boxUpper = {copies.first * packing.length, copies.second * packing.length};
         p.periodic = {true, true};
         p.timeStep = 2.14e-7;
         p.neighbourSkin = skin;
@@ -114,10 +150,10 @@ int main(int argc, char** argv)
         bottom.position = 0.0;
         system.addWall(bottom);
         const long n = long(system.grainCount());
-        std::printf("demBench: %s, N = %ld, L = %g m, dt = %g s, skin = %g m, backend %s, "
-                    "%d thread(s)\n",
-                    packingFile.c_str(), n, packing.length, p.timeStep, skin,
-                    system.backendName().c_str(), system.threadCount());
+        std::printf("demBench: %s x %dx%d, N = %ld, L = %g m, dt = %g s, skin = %g m, "
+                    "backend %s, %d thread(s)\n",
+                    packingFile.c_str(), copies.first, copies.second, n, packing.length, p.timeStep,
+                    skin, system.backendName().c_str(), system.threadCount());
 
         system.setViscousDrag(612.0);
         system.step(relaxSteps);

@@ -27,9 +27,12 @@ std::unique_ptr<Engine> makeCudaEngine(const Parameters& parameters)
     int count = 0;
     const cudaError_t status = cudaGetDeviceCount(&count);
     if (status != cudaSuccess || count == 0)
+    {
+        cudaGetLastError(); // clear the sticky error before the caller falls back
         throw Error(std::string("backend 'cuda' requested but no CUDA device answers (") +
                     (status != cudaSuccess ? cudaGetErrorString(status) : "0 devices") +
                     "); use backend 'cpu' or 'auto'");
+    }
     return std::make_unique<EngineImpl<CudaExecution>>(parameters);
 }
 

@@ -1,18 +1,20 @@
 // CudaExecution.cuh
 // CUDA backend of the kernels: Thrust's CUDA system for storage, sorting and scans, one thread
 // per grain (or cell) for the kernels. Compiled by nvcc only.
+//
+// An engine owns one CudaExecution (EngineImpl::exec_): its Thrust policy draws every temporary
+// buffer from a DeviceMemoryCache, and the reductions that end each step write into a scratch
+// vector that only grows, so a step allocates no device memory after the first ones. Every
+// launch and runtime call is checked (CudaCheck.cuh); the reductions, which end every step and
+// synchronise, turn a fault of the step's kernels into a dem::Error.
 #pragma once
 
-#include "dem/Error.h"
+#include "backends/CudaCheck.cuh"
+#include "backends/DeviceMemoryCache.cuh"
 
-#include <thrust/iterator/counting_iterator.h>
 #include <thrust/reduce.h>
 #include <thrust/system/cuda/execution_policy.h>
 #include <thrust/system/cuda/vector.h>
-
-#include <cuda_runtime.h>
-
-#include <string>
 
 namespace dem
 {
@@ -43,23 +45,24 @@ __global__ void forEachStoreKernel(F f, int n, double* out)
         out[i] = f(i);
 }
 
-inline void checkCuda(cudaError_t status, const char* what)
-{
-    if (status != cudaSuccess)
-        throw Error(std::string("CUDA error in ") + what + ": " + cudaGetErrorString(status));
-}
-
 struct MaxOfDoubles
 {
     __host__ __device__ double operator()(double a, double b) const { return a > b ? a : b; }
 };
 
-struct CudaExecution
+class CudaExecution
 {
+public:
     template <class T>
     using Vector = thrust::cuda::vector<T>;
 
-    static auto policy() { return thrust::cuda::par; }
+    CudaExecution() = default;
+    CudaExecution(const CudaExecution&) = delete;
+    CudaExecution& operator=(const CudaExecution&) = delete;
+
+    //- Thrust's CUDA policy with this engine's cached temporary storage (synchronous, like
+    //- thrust::cuda::par).
+    auto policy() { return thrust::cuda::par(cache_); }
     //- Per-pair vectors stored pair by pair (see PairView).
     static constexpr bool kPairMajor = false;
     static const char* name() { return "cuda"; }
@@ -72,7 +75,7 @@ struct CudaExecution
         if (n <= 0)
             return;
         forEachKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(f, n);
-        checkCuda(cudaGetLastError(), "kernel launch");
+        DEM_CUDA_CHECK_LAUNCH("forEachKernel");
     }
 
     template <class F>
@@ -81,7 +84,7 @@ struct CudaExecution
         if (n <= 0)
             return;
         forEachPairKernel<<<int((n + kBlock - 1) / kBlock), kBlock>>>(f, n);
-        checkCuda(cudaGetLastError(), "kernel launch");
+        DEM_CUDA_CHECK_LAUNCH("forEachPairKernel");
     }
 
     template <class F>
@@ -90,35 +93,40 @@ struct CudaExecution
         forEach(n, f); // atomics in the kernel
     }
 
+    //- max(0, f(0), ..., f(n-1)); f may have side effects (each i runs once).
     template <class F>
-    static double maxOf(int n, const F& f)
+    double maxOf(int n, const F& f)
     {
         if (n <= 0)
             return 0.0;
-        const Vector<double> values = valuesOf(n, f);
-        return thrust::reduce(policy(), values.begin(), values.end(), 0.0, MaxOfDoubles());
+        const double* v = valuesOf(n, f);
+        return DEM_THRUST_CHECK(thrust::reduce(policy(), v, v + n, 0.0, MaxOfDoubles()));
     }
 
     template <class F>
-    static double sumOf(int n, const F& f)
+    double sumOf(int n, const F& f)
     {
         if (n <= 0)
             return 0.0;
-        const Vector<double> values = valuesOf(n, f);
-        return thrust::reduce(policy(), values.begin(), values.end(), 0.0);
+        const double* v = valuesOf(n, f);
+        return DEM_THRUST_CHECK(thrust::reduce(policy(), v, v + n, 0.0));
     }
 
 private:
-    //- f(0), ..., f(n-1) on the device (each evaluated once: f may have side effects).
+    //- f(0), ..., f(n-1) into the scratch vector (each evaluated once: f may have side effects).
     template <class F>
-    static Vector<double> valuesOf(int n, const F& f)
+    const double* valuesOf(int n, const F& f)
     {
-        Vector<double> values(n);
-        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(
-            f, n, thrust::raw_pointer_cast(values.data()));
-        checkCuda(cudaGetLastError(), "kernel launch");
-        return values;
+        if (values_.size() < std::size_t(n))
+            values_.resize(n); // grows with the grain count, never shrinks
+        double* out = thrust::raw_pointer_cast(values_.data());
+        forEachStoreKernel<<<(n + kBlock - 1) / kBlock, kBlock>>>(f, n, out);
+        DEM_CUDA_CHECK_LAUNCH("forEachStoreKernel");
+        return out;
     }
+
+    DeviceMemoryCache cache_;
+    Vector<double> values_;
 };
 
 } // namespace detail

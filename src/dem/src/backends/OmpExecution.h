@@ -2,7 +2,8 @@
 // CPU backend of the kernels: Thrust's OpenMP system for storage, sorting and scans, plain
 // OpenMP loops (static schedule) for the per-grain kernels. Results do not depend on the thread
 // count (sums run over fixed blocks), so a restarted run repeats the uninterrupted one bit for
-// bit.
+// bit. Stateless: the engine holds an instance (EngineImpl::exec_) only because the CUDA policy
+// keeps cached device memory.
 #pragma once
 
 #include <thrust/system/omp/execution_policy.h>

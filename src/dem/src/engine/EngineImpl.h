@@ -90,7 +90,7 @@ public:
         if (nSteps <= 0)
             return;
         // Each pass over the grains ends one step and begins the next (see GatherKick).
-        double moved2 = Exec::maxOf(n, KickDrift{grains_.view(), dt});
+        double moved2 = exec_.maxOf(n, KickDrift{grains_.view(), dt});
         wallsKickDrift(dt);
         for (int s = 0; s < nSteps; ++s)
         {
@@ -101,7 +101,7 @@ public:
             }
             computeForces(dt);
             const bool last = s + 1 == nSteps;
-            moved2 = Exec::maxOf(n, gatherKick(dt, dt, !last));
+            moved2 = exec_.maxOf(n, gatherKick(dt, dt, !last));
             wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
                 wallsKickDrift(dt);
@@ -118,11 +118,11 @@ public:
     WallData wall(int wall) const override;
     double prescribedGrainForceX() const override
     {
-        return Exec::sumOf(grains_.size(), PrescribedForceX{self().grains_.view()});
+        return exec_.sumOf(grains_.size(), PrescribedForceX{self().grains_.view()});
     }
     double prescribedGrainImpulseX() const override
     {
-        return Exec::sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)});
+        return exec_.sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)});
     }
     std::size_t contactCount() const override;
     std::size_t pairCount() const override { return std::size_t(pairs_.count()); }
@@ -227,7 +227,7 @@ private:
 
     double wallGrainForce(int w) const
     {
-        return Exec::sumOf(grains_.size(), WallForceOf{self().grains_.real(fWallState), w});
+        return exec_.sumOf(grains_.size(), WallForceOf{self().grains_.real(fWallState), w});
     }
 
     void wallsFinishStep(double dt)
@@ -253,19 +253,26 @@ private:
         rebuild();
         Exec::forEach(n, PackGrains{grains_.view()});
         computeForces(0.0);
-        Exec::maxOf(n, gatherKick(0.0, 0.0, false));
+        exec_.maxOf(n, gatherKick(0.0, 0.0, false));
         forcesStale_ = false;
     }
 
     CellGridView cellGrid();
     void rebuild();
 
+    //- The backend's execution state (CUDA: cached temporary storage and scratch for the
+    //- reductions; the CPU's is empty). Mutable: read-back methods reduce too.
+    mutable Exec exec_;
     Parameters params_;
     GrainStorage<Exec> grains_;
     PairStorage<Exec> pairs_, oldPairs_;
     std::vector<WallState> walls_;
     Vec<int> cellKey_, order_, cellStart_, counts_;
     Vec<double> fluidGradP_;
+    //- Scratch of the read-back and coupling calls (deposit each fluid step, grains() at each
+    //- diagnostics write): kept, so those calls allocate no device memory once sized.
+    mutable Vec<double> depositSolid_, depositMomentum_, depositPorosity_, fluidForceScratch_;
+    mutable Vec<int> contactScratch_;
     FluidView fluid_;
     bool needRebuild_ = true;
     bool forcesStale_ = true;

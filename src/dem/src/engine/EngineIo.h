@@ -85,7 +85,7 @@ double EngineImpl<Exec>::minimumMass() const
 {
     const int n = grains_.size();
     const double* inverseMass = self().grains_.real(fInverseMass);
-    return 1.0 / thrust::reduce(Exec::policy(), inverseMass, inverseMass + n, 0.0, MaxOp());
+    return 1.0 / thrust::reduce(exec_.policy(), inverseMass, inverseMass + n, 0.0, MaxOp());
 }
 
 template <class Exec>
@@ -97,7 +97,8 @@ GrainData EngineImpl<Exec>::grains() const
     std::vector<int> contacts(n, 0);
     if (grainsAtLastBuild_ == n && !needRebuild_)
     {
-        Vec<int> perGrain(n);
+        Vec<int>& perGrain = contactScratch_;
+        perGrain.resize(n);
         EngineImpl& e = self();
         Exec::forEach(n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(), true,
                                        thrust::raw_pointer_cast(perGrain.data())});
@@ -120,7 +121,8 @@ GrainData EngineImpl<Exec>::grains() const
     vector3(fForce, out.force);
     vector3(fTorque, out.torque);
     {
-        Vec<double> fluidForce(3 * std::size_t(n), 0.0);
+        Vec<double>& fluidForce = fluidForceScratch_; // every entry set by the kernel
+        fluidForce.resize(3 * std::size_t(n));
         EngineImpl& e = self();
         FluidView fluid = fluid_;
         fluid.gradP = thrust::raw_pointer_cast(e.fluidGradP_.data());
@@ -189,7 +191,7 @@ std::size_t EngineImpl<Exec>::contactCount() const
     if (grainsAtLastBuild_ != n || needRebuild_)
         return 0;
     EngineImpl& e = self();
-    return std::size_t(std::llround(Exec::sumOf(
+    return std::size_t(std::llround(exec_.sumOf(
         n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(), false, nullptr})));
 }
 
@@ -219,10 +221,17 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
     const int n = grains_.size();
     const long cells = g.cellCount();
     EngineImpl& e = self();
-    Vec<double> solid(cells, 0.0), momentum(meanVelocity ? 3 * cells : 0, 0.0), phi(cells);
+    Vec<double>& solid = depositSolid_;
+    Vec<double>& momentum = depositMomentum_;
+    Vec<double>& phi = depositPorosity_;
+    solid.resize(cells);
+    momentum.resize(meanVelocity ? 3 * cells : 0);
+    phi.resize(cells);
     auto depositAt = [&](double lookAhead, bool withVelocity)
     {
-        thrust::fill(solid.begin(), solid.end(), 0.0);
+        thrust::fill(exec_.policy(), solid.begin(), solid.end(), 0.0);
+        if (withVelocity)
+            thrust::fill(exec_.policy(), momentum.begin(), momentum.end(), 0.0);
         Exec::forEachScatter(
             n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
                              e.grains_.real(fRadius), g, lookAhead,

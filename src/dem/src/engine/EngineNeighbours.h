@@ -19,15 +19,15 @@ CellGridView EngineImpl<Exec>::cellGrid()
 {
     const int n = grains_.size();
     const double* radius = grains_.real(fRadius);
-    const double rMax = thrust::reduce(Exec::policy(), radius, radius + n, 0.0, MaxOp());
+    const double rMax = thrust::reduce(exec_.policy(), radius, radius + n, 0.0, MaxOp());
     const BoxView box = boxView();
     double lower[3], upper[3];
     for (int d = 0; d < 3; ++d)
     {
         const double* x = grains_.real(fPosition) + long(d) * n;
-        lower[d] = thrust::reduce(Exec::policy(), x, x + n, std::numeric_limits<double>::infinity(),
+        lower[d] = thrust::reduce(exec_.policy(), x, x + n, std::numeric_limits<double>::infinity(),
                                   MinOp());
-        upper[d] = thrust::reduce(Exec::policy(), x, x + n,
+        upper[d] = thrust::reduce(exec_.policy(), x, x + n,
                                   -std::numeric_limits<double>::infinity(), MaxOp());
     }
     double cellSize = 2.0 * rMax + params_.neighbourSkin;
@@ -83,11 +83,11 @@ void EngineImpl<Exec>::rebuild()
     order_.resize(n);
     Exec::forEach(
         n, CellKey{grains_.vec3(fPosition), cells, thrust::raw_pointer_cast(cellKey_.data())});
-    thrust::sequence(Exec::policy(), order_.begin(), order_.end());
-    thrust::stable_sort_by_key(Exec::policy(), cellKey_.begin(), cellKey_.end(), order_.begin());
-    grains_.permute(order_);
+    thrust::sequence(exec_.policy(), order_.begin(), order_.end());
+    thrust::stable_sort_by_key(exec_.policy(), cellKey_.begin(), cellKey_.end(), order_.begin());
+    grains_.permute(exec_.policy(), order_);
     cellStart_.resize(cellCount + 1);
-    thrust::lower_bound(Exec::policy(), cellKey_.begin(), cellKey_.end(),
+    thrust::lower_bound(exec_.policy(), cellKey_.begin(), cellKey_.end(),
                         thrust::counting_iterator<int>(0),
                         thrust::counting_iterator<int>(cellCount + 1), cellStart_.begin());
     cells.cellStart = thrust::raw_pointer_cast(cellStart_.data());
@@ -101,7 +101,7 @@ void EngineImpl<Exec>::rebuild()
     counts_[n] = 0;
     Exec::forEach(n, CountNeighbours{search, true, counts});
     pairs_.start.resize(n + 1);
-    thrust::exclusive_scan(Exec::policy(), counts_.begin(), counts_.end(), pairs_.start.begin());
+    thrust::exclusive_scan(exec_.policy(), counts_.begin(), counts_.end(), pairs_.start.begin());
     const long pairCount = pairs_.start[n];
     if (params_.maxPairsPerGrain > 0 && pairCount > long(params_.maxPairsPerGrain) * n)
     {
@@ -128,7 +128,7 @@ void EngineImpl<Exec>::rebuild()
     Exec::forEach(n, CountNeighbours{search, false, counts});
     counts_[n] = 0;
     pairs_.incomingStart.resize(n + 1);
-    thrust::exclusive_scan(Exec::policy(), counts_.begin(), counts_.end(),
+    thrust::exclusive_scan(exec_.policy(), counts_.begin(), counts_.end(),
                            pairs_.incomingStart.begin());
     if (long(pairs_.incomingStart[n]) != pairCount)
         throw Error("internal error: neighbour lists disagree (" + std::to_string(pairCount) +
@@ -139,11 +139,11 @@ void EngineImpl<Exec>::rebuild()
                                        thrust::raw_pointer_cast(pairs_.incomingStart.data()),
                                        thrust::raw_pointer_cast(pairs_.incomingPair.data())});
     // GatherKick reads every entry without a check.
-    if (thrust::count(Exec::policy(), pairs_.incomingPair.begin(), pairs_.incomingPair.end(), -1))
+    if (thrust::count(exec_.policy(), pairs_.incomingPair.begin(), pairs_.incomingPair.end(), -1))
         throw Error("internal error: a neighbour pair is missing from the transposed list");
 
     const double* x = grains_.real(fPosition);
-    thrust::copy(Exec::policy(), x, x + 3L * n, grains_.real(fPositionAtBuild));
+    thrust::copy(exec_.policy(), x, x + 3L * n, grains_.real(fPositionAtBuild));
     Exec::forEach(n, PackGrains{grains_.view()});
     grainsAtLastBuild_ = n;
     needRebuild_ = false;

@@ -162,11 +162,13 @@ public:
         n_ = m;
     }
 
-    //- Reorder every field: new grain i = old grain order[i].
-    void permute(const Vec<int>& order)
+    //- Reorder every field: new grain i = old grain order[i] (policy: the engine's Thrust
+    //- execution policy).
+    template <class Policy>
+    void permute(const Policy& policy, const Vec<int>& order)
     {
-        permuteAll(reals_, realFieldInfo, scratchReal_, order);
-        permuteAll(ints_, intFieldInfo, scratchInt_, order);
+        permuteAll(policy, reals_, realFieldInfo, scratchReal_, order);
+        permuteAll(policy, ints_, intFieldInfo, scratchInt_, order);
     }
 
     //- Replace all fields (import); sizes are checked by the caller.
@@ -207,8 +209,8 @@ private:
         }
         return out;
     }
-    template <class T, std::size_t F, class Info>
-    void permuteAll(std::array<Vec<T>, F>& fields, Info info, Vec<T>& scratch,
+    template <class Policy, class T, std::size_t F, class Info>
+    void permuteAll(const Policy& policy, std::array<Vec<T>, F>& fields, Info info, Vec<T>& scratch,
                     const Vec<int>& order)
     {
         for (std::size_t f = 0; f < F; ++f)
@@ -225,8 +227,8 @@ private:
                 continue;
             }
             for (int c = 0; c < components; ++c)
-                thrust::gather(Exec::policy(), order.begin(), order.end(),
-                               fields[f].begin() + long(c) * n_, scratch.begin() + long(c) * n_);
+                thrust::gather(policy, order.begin(), order.end(), fields[f].begin() + long(c) * n_,
+                               scratch.begin() + long(c) * n_);
             fields[f].swap(scratch);
         }
     }
