@@ -56,6 +56,7 @@ BETA = 1e-8
 RATE = 0.2          # expansion rate [1/s]
 ZC = 0.12
 T = 0.01            # length of each leg [s]
+REST = 0.0005       # at rest before and after [s]
 DT = 1e-4
 PROBES = [(0.01, 0.01, 0.11), (0.01, 0.01, 0.13)]
 
@@ -77,9 +78,6 @@ def add_probes(c):
               " writeControl timeStep; writeInterval 1; fields (p porosity ddt(porosity));"
               " probeLocations (" + " ".join("(%g %g %g)" % x for x in PROBES) + "); }\n")
     open(c.file("system/controlDict"), "w").write(ctrl.replace("functions\n{\n", probes, 1))
-
-
-REST = 0.0005       # at rest before and after [s]
 
 
 def restart_with_velocity(c, vz):
@@ -140,7 +138,7 @@ def test_compress_and_return(form):
     phi, rate, p = s["porosity"], s["ddt(porosity)"], s["p"]
     n = len(phi)
     assert n == round((2 * REST + 2 * T) / DT)
-    # phi before the first step: the first (rest) step does not change it
+    # phi[0], after the first step, is the start porosity: the grains rest then
     phi_start, phi_turn, phi_end = phi[0], phi[round((REST + T) / DT) - 1], phi[-1]
     d = rate[round((REST + T) / DT) - 1] * DT
 
