@@ -47,8 +47,8 @@ grad(porosity) ~ 0 there).
 
 Where eq. 9 does drift, when the grains' velocity changes within fluid
 steps, test_ballistic_flight_eq9_drift measures it against its closed form
-(measured: 2 % of the porosity change at the flight's apex, to 1e-9 of the
-closed form; the exact form: 0)."""
+(measured: 2 % of the porosity change at the flight's apex, within 1e-9 of
+the closed form; the exact form: 0)."""
 
 import os
 
@@ -183,8 +183,10 @@ def test_ballistic_flight_eq9_drift():
         sum rate dt - (phi_end - phi_start) = F' v0 dt/2
                                             = -(phi_apex - phi_start) g dt/v0,
     2 % of the apex change here. Exact form: 0. Tolerances: round-off, 1e-13
-    (120 steps), and 1e-9 relative for eq. 9 (F is linear: the closed form is
-    exact)."""
+    (120 steps), and 1e-7 relative for eq. 9: F is linear, so the closed form
+    is exact but for the fluid force on the grains (1e15 kg/m^3), which moves
+    them by ~1e-11 m (they land 6e-12 off in porosity), 1e-7 of the apex
+    height. Measured: 1e-9."""
     v0, g = 0.05, 10.0
     flight = 2 * v0 / g
     column = [(0.01, 0.01, 0.01 + 0.02 * k) for k in range(12)]
@@ -202,10 +204,11 @@ def test_ballistic_flight_eq9_drift():
         print(f"{form}: sum rate dt - (phi_end - phi_start) = {drifts[form]}")
     ends = np.abs(apex_change) > 1e-4     # the cells at the lattice's ends
     expected = -apex_change * g * DT / v0
-    print(f"eq. 9 drift expected {expected[ends]}, measured {drifts['predictedPosition'][ends]}")
+    print(f"eq. 9 drift expected {expected[ends]}, measured {drifts['predictedPosition'][ends]}"
+          f", relative error {np.abs(drifts['predictedPosition'][ends] / expected[ends] - 1)}")
     assert ends.sum() >= 2
     assert np.max(np.abs(drifts["exactDifference"])) < 1e-13
-    assert np.all(np.abs(drifts["predictedPosition"][ends] / expected[ends] - 1) < 1e-9)
+    assert np.all(np.abs(drifts["predictedPosition"][ends] / expected[ends] - 1) < 1e-7)
 
 
 def test_unknown_porosity_rate_lists_the_forms():
