@@ -35,6 +35,7 @@ Description
 #include "darcyFluid.H"
 #include "permeabilityModel.H"
 #include "solidPhase.H"
+#include "fixedPressureRegion.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -19,6 +19,13 @@ namespace solidPhases
 }
 }
 
+const Foam::Enum<Foam::solidPhases::demGrains::porosityRateForm>
+Foam::solidPhases::demGrains::porosityRateFormNames
+({
+    { porosityRateForm::predictedPosition, "predictedPosition" },
+    { porosityRateForm::exactDifference, "exactDifference" },
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -46,6 +53,15 @@ Foam::solidPhases::demGrains::demGrains
     porosityMin_(inputChecks::getInOpenRange(dict, "porosityMin", 0, 1)),
     porosityMax_(inputChecks::getInOpenRange(dict, "porosityMax", 0, 1)),
     topPressure_(dict.get<scalar>("topPressure")),
+    rateForm_
+    (
+        porosityRateFormNames.getOrDefault
+        (
+            "porosityRate",
+            dict,
+            porosityRateForm::predictedPosition
+        )
+    ),
     predictedPorosity_
     (
         IOobject
@@ -70,6 +86,8 @@ Foam::solidPhases::demGrains::demGrains
             << exit(FatalIOError);
     }
 
+    Info<< "    porosity rate: " << porosityRateFormNames[rateForm_] << endl;
+
     // The grains of the start time define the porosity there (also on a
     // restart: the deposit is deterministic)
     deposit(mesh.time().deltaTValue());
@@ -86,7 +104,15 @@ void Foam::solidPhases::demGrains::evolve()
     cloud_.evolve(dt);
     deposit(dt);
 
-    porosityRate_ = (predictedPorosity_ - previous)/(2*mesh_.time().deltaT());
+    if (rateForm_ == porosityRateForm::exactDifference)
+    {
+        porosityRate_ = (porosity_ - previous)/mesh_.time().deltaT();
+    }
+    else
+    {
+        porosityRate_ =
+            (predictedPorosity_ - previous)/(2*mesh_.time().deltaT());
+    }
 }
 
 
