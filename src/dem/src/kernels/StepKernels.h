@@ -142,6 +142,10 @@ struct PairForceKernel
         return Vector3d(x, y, z);
     }
 
+    //- Squared fraction of the radii sum below which two centres count as coincident (1e-12:
+    //- far below any physical overlap, far above where 1/distance overflows).
+    static constexpr double kCoincidentFraction2 = 1e-24;
+
     DEM_HD void operator()(long p) const
     {
         const long i = pairs.owner[p], j = pairs.partner[p];
@@ -151,9 +155,18 @@ struct PairForceKernel
         const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
         const double sumRadii = ri + rj;
         const double distance2 = d.squaredNorm();
-        const bool touching = distance2 < sumRadii * sumRadii;
-        const double distance = std::sqrt(touching ? distance2 : 1.0);
-        const Vector3d n = d * (1.0 / distance);
+        const double sumRadii2 = sumRadii * sumRadii;
+        const bool touching = distance2 < sumRadii2;
+        // Coincident centres (a duplicated grain) have no direction: the distance is floored at
+        // kCoincidentFraction of the radii sum and the normal is +z, so the pair is pushed apart
+        // along z by the full-overlap spring force instead of dividing by zero. Selects only:
+        // the loop stays vectorised, and other pairs get the same arithmetic as before.
+        const double floor2 = kCoincidentFraction2 * sumRadii2;
+        const bool coincident = distance2 < floor2;
+        const double distance = std::sqrt(touching ? (coincident ? floor2 : distance2) : 1.0);
+        const double inverse = 1.0 / distance;
+        const Vector3d n(coincident ? 0.0 : d.x() * inverse, coincident ? 0.0 : d.y() * inverse,
+                         coincident ? 1.0 : d.z() * inverse);
         const double overlap = sumRadii - distance;
 
         const long cs = pairs.stride();
