@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainVtkWriter.H"
+#include "atomicFile.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 
@@ -116,7 +117,9 @@ void Foam::grainVtkWriter::writePvd(const Time& runTime)
 {
     const instantList times = runTime.times();
 
-    OFstream os(runTime.path()/"grains.pvd");
+    // Whole or not at all (temporary renamed into place, see atomicFile)
+    const atomicFile file(runTime.path()/"grains.pvd");
+    OFstream os(file.tmpPath());
     os  << "<?xml version=\"1.0\"?>" << nl
         << "<VTKFile type=\"Collection\" version=\"0.1\">" << nl
         << "  <Collection>" << nl;
@@ -130,6 +133,8 @@ void Foam::grainVtkWriter::writePvd(const Time& runTime)
     }
     os  << "  </Collection>" << nl
         << "</VTKFile>" << nl;
+    os.flush();
+    file.commit();
 }
 
 
