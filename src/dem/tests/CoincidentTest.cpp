@@ -35,8 +35,7 @@ TEST_P(Coincident, GrainsAtTheSameCentreGetFiniteForcesAndSeparateAlongZ)
     const double kn = p.grainGrain.normalStiffness, sumRadii = 2 * g.radius;
     const Vec3 f0 = at(d.force, 0), f1 = at(d.force, 1);
     const double gap = norm(sub(at(d.position, 1), at(d.position, 0)));
-    std::printf("  force on grain 0 (%g %g %g) N, centres %g m apart\n", f0[0], f0[1], f0[2],
-                gap);
+    std::printf("  force on grain 0 (%g %g %g) N, centres %g m apart\n", f0[0], f0[1], f0[2], gap);
     EXPECT_EQ(f0[0], 0.0);
     EXPECT_EQ(f0[1], 0.0);
     EXPECT_EQ(f0[2], -f1[2]);

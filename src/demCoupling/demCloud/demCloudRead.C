@@ -12,6 +12,8 @@
 #include "Enum.H"
 #include "IFstream.H"
 
+#include <sstream>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -369,13 +371,23 @@ void Foam::demCloud::checkStateMatchesCase
         {
             if (mag(periodicBox[k] - box[k]) > tol)
             {
+                // Ten digits: as the box was written in blockMeshDict
+                const auto range = [](const scalar lo, const scalar hi)
+                {
+                    std::ostringstream os;
+                    os.precision(10);
+                    os  << '[' << lo << ", " << hi << ']';
+                    return os.str();
+                };
                 FatalErrorInFunction
                     << path << " was written for another case: its periodic"
-                    << " box is x in [" << periodicBox[0] << ", "
-                    << periodicBox[1] << "], y in [" << periodicBox[2]
-                    << ", " << periodicBox[3] << "], this mesh's is x in ["
-                    << box[0] << ", " << box[1] << "], y in [" << box[2]
-                    << ", " << box[3] << "]" << nl << exit(FatalError);
+                    << " box is x in "
+                    << range(periodicBox[0], periodicBox[1]).c_str()
+                    << ", y in "
+                    << range(periodicBox[2], periodicBox[3]).c_str()
+                    << ", this mesh's is x in " << range(box[0], box[1]).c_str()
+                    << ", y in " << range(box[2], box[3]).c_str() << nl
+                    << exit(FatalError);
             }
         }
     }

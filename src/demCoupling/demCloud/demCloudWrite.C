@@ -55,6 +55,9 @@ bool Foam::demCloud::writeObject
     const bool
 ) const
 {
+    // Test hook: stop among OpenFOAM's field files of this time
+    atomicFile::killPoint("amongFields");
+
     const Time& runTime = mesh_.time();
     const fileName dir(runTime.timePath());
     mkDir(dir);

@@ -11,6 +11,24 @@
 #include <cmath>
 #include <sstream>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A number as a user would write it (10 digits: the OpenFOAM error stream
+//- follows writePrecision, and 0.1 read back prints 0.10000000000000001)
+std::string num(const double x)
+{
+    std::ostringstream os;
+    os.precision(10);
+    os  << x;
+    return os.str();
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::grainStartState::grainStartState
@@ -126,7 +144,8 @@ void Foam::grainStartState::checkPlacement
                 FatalIOErrorInFunction(demProperties)
                     << describe(i).c_str() << " of " << path_ << " lies"
                     << " outside the periodic box, " << char('x' + d)
-                    << " in [" << lo << ", " << lo + length << ")." << nl
+                    << " in [" << num(lo).c_str() << ", "
+                    << num(lo + length).c_str() << ")." << nl
                     << "Set 'wrapGrains yes;' in " << demProperties.name()
                     << " to wrap such grains into the box." << nl
                     << exit(FatalIOError);
@@ -142,7 +161,8 @@ void Foam::grainStartState::checkPlacement
         {
             FatalErrorInFunction
                 << describe(i).c_str() << " of " << path_ << " lies outside"
-                << " the mesh, z in [" << zLo << ", " << zHi << "]" << nl
+                << " the mesh, z in [" << num(zLo).c_str() << ", "
+                << num(zHi).c_str() << "]" << nl
                 << exit(FatalError);
         }
         for (const dem::WallSpec& w : walls)
@@ -153,7 +173,7 @@ void Foam::grainStartState::checkPlacement
                 FatalIOErrorInFunction(demProperties)
                     << describe(i).c_str() << " of " << path_ << " lies "
                     << (lower ? "below the lower" : "above the upper")
-                    << " wall at z = " << w.position << " ("
+                    << " wall at z = " << num(w.position).c_str() << " ("
                     << demProperties.name() << ", walls)" << nl
                     << exit(FatalIOError);
             }
@@ -306,12 +326,13 @@ void Foam::grainStartState::checkOverlaps
           - worst*min(grains_[worstI].radius, grains_[worstJ].radius);
         FatalIOErrorInFunction(demProperties)
             << path_ << ": " << count << " pair(s) of grains overlap by more"
-            << " than maxInitialOverlap = " << allowed << " of the smaller"
-            << " radius. The worst: " << nl << "    "
+            << " than maxInitialOverlap = " << num(allowed).c_str() << " of"
+            << " the smaller radius. The worst: " << nl << "    "
             << describe(worstI).c_str() << nl << "    "
             << describe(worstJ).c_str() << nl << "    "
-            << (distance <= SMALL*grains_[worstI].radius ? "coincident" : "")
-            << " overlap " << 100*worst << " % of the smaller radius" << nl
+            << (distance <= SMALL*grains_[worstI].radius ? "coincident, " : "")
+            << "overlap " << num(100*worst).c_str()
+            << " % of the smaller radius" << nl
             << "Such an overlap stores elastic energy k delta^2/2 far above a"
             << " settled packing's; remove the duplicate or spread the grains"
             << " (bin/makeGrains), or raise maxInitialOverlap in "

@@ -254,7 +254,7 @@ struct GatherKick
             vw[4 + c] = omega[c];
         }
         const double* b = g.packedPositionAtBuild + 4L * j;
-        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
+        return movedOrInfinity((x - Vector3d(b[0], b[1], b[2])).squaredNorm());
     }
 };
 
