@@ -9,8 +9,8 @@
 #include "inputChecks.H"
 #include "demStateFile.H"
 #include "grainStartState.H"
+#include "grainsFile.H"
 #include "Enum.H"
-#include "IFstream.H"
 
 #include <sstream>
 
@@ -395,27 +395,17 @@ void Foam::demCloud::checkStateMatchesCase
     // In a restart, the grains file written beside it at the same time
     // lists as many grains (a prepared packing copied into a case may sit
     // beside that case's own start grains)
-    const fileName beside(path.path()/"grains");
-    IFstream is(beside);
-    if (!restart || !is.good())
+    const grainsFile beside(path.path()/"grains");
+    if (!restart || !beside.found())
     {
         return;
     }
-    label listed = 0;
-    std::string line;
-    while (std::getline(is.stdStream(), line))
-    {
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first != std::string::npos && line[first] != '#')
-        {
-            ++listed;
-        }
-    }
+    const label listed = beside.count();
     if (listed != label(system_->grainCount()))
     {
         FatalErrorInFunction
             << path << " holds " << label(system_->grainCount())
-            << " grains but " << beside << " beside it lists " << listed
+            << " grains but " << beside.path() << " beside it lists " << listed
             << ": the demState comes from another case or another run."
             << " Remove one of the two (the grains file alone starts without"
             << " contact history)." << nl << exit(FatalError);

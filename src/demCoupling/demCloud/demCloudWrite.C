@@ -11,38 +11,10 @@
 #include "demStateFile.H"
 #include "demLibraryCall.H"
 #include "atomicFile.H"
+#include "grainsFile.H"
 #include "grainVtkWriter.H"
 #include "Time.H"
 #include "OSspecific.H"
-
-#include <fstream>
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Grains in the input format 'x y z r', exact to the last digit, so that
-//- a new case can start from them (without contact history)
-void writeGrainsFile(const Foam::fileName& path, const dem::GrainData& g)
-{
-    const Foam::atomicFile file(path);
-    {
-        std::ofstream os(file.tmpPath());
-        os.precision(17);
-        os  << "# darcyDem grains: x y z r [m], one grain per line (written"
-            << " at a write time; demState beside it holds the complete"
-            << " state)\n";
-        for (size_t i = 0; i < g.radius.size(); ++i)
-        {
-            os  << g.position[3*i] << ' ' << g.position[3*i + 1] << ' '
-                << g.position[3*i + 2] << ' ' << g.radius[i] << '\n';
-        }
-    }
-    file.commit();
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -66,7 +38,7 @@ bool Foam::demCloud::writeObject
     const atomicFile vtp(dir/"grains.vtp");
     grainVtkWriter::writeVtp(vtp.tmpPath(), g, asciiOutput_);
     vtp.commit();
-    writeGrainsFile(dir/"grains", g);
+    grainsFile(dir/"grains").write(g);
     grainVtkWriter::writePvd(runTime);
 
     return true;

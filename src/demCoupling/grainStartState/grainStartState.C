@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainStartState.H"
-#include "IFstream.H"
+#include "grainsFile.H"
 #include "error.H"
 
 #include <algorithm>
@@ -41,7 +41,7 @@ Foam::grainStartState::grainStartState
 :
     path_(path)
 {
-    read();
+    grains_ = grainsFile(path).read(lines_);
     checkPlacement(demProperties, mesh, walls);
     checkOverlaps(demProperties, mesh);
 }
@@ -57,62 +57,6 @@ Foam::string Foam::grainStartState::describe(const size_t i) const
     os  << "grain " << i << " (line " << lines_[i] << ") at (" << x[0] << ' '
         << x[1] << ' ' << x[2] << ')';
     return os.str();
-}
-
-
-void Foam::grainStartState::read()
-{
-    IFstream is(path_);
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "Cannot read the grains: neither " << path_ << " (x y z r per"
-            << " line) nor a restart file " << path_.path()/"demState"
-            << " exists" << nl << exit(FatalError);
-    }
-
-    std::string line;
-    label lineNo = 0;
-    auto& stream = is.stdStream();
-    while (std::getline(stream, line))
-    {
-        ++lineNo;
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
-        {
-            continue;
-        }
-        // x y z r, optionally followed by the velocity vx vy vz
-        std::istringstream ls(line);
-        std::vector<double> v;
-        double value;
-        while (ls >> value)
-        {
-            v.push_back(value);
-        }
-        if (!ls.eof() || (v.size() != 4 && v.size() != 7) || !(v[3] > 0))
-        {
-            FatalErrorInFunction
-                << path_ << " line " << lineNo << ": expected 'x y z r' or"
-                << " 'x y z r vx vy vz' with r > 0, found '" << line << "'"
-                << nl << exit(FatalError);
-        }
-        dem::GrainInit g;
-        g.position = {v[0], v[1], v[2]};
-        g.radius = v[3];
-        if (v.size() == 7)
-        {
-            g.velocity = {v[4], v[5], v[6]};
-        }
-        grains_.push_back(g);
-        lines_.push_back(lineNo);
-    }
-
-    if (grains_.empty())
-    {
-        FatalErrorInFunction
-            << path_ << " holds no grains" << nl << exit(FatalError);
-    }
 }
 
 
