@@ -5,7 +5,6 @@
 
 #include "demCloud.H"
 #include "demLibraryCall.H"
-#include "finiteCheck.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -188,12 +187,6 @@ void Foam::demCloud::evolve(const scalar dtFluid)
         std::chrono::steady_clock::now() - start
     ).count();
     particleSteps_ += double(nSub)*system_->grainCount();
-
-    // Nothing of a blown-up step may reach a written time
-    finiteCheck::grains
-    (
-        libraryGrains(), mesh_.time().value(), properties_.objectPath()
-    );
 
     reportProgress();
 }

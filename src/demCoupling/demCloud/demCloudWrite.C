@@ -12,6 +12,7 @@
 #include "demLibraryCall.H"
 #include "atomicFile.H"
 #include "grainsFile.H"
+#include "finiteCheck.H"
 #include "grainVtkWriter.H"
 #include "Time.H"
 #include "OSspecific.H"
@@ -35,6 +36,9 @@ bool Foam::demCloud::writeObject
     mkDir(dir);
 
     const dem::GrainData g(grains());
+    // Backs up the DEM step's own check: nothing non-finite is written (the
+    // time then has no demState and stays incomplete)
+    finiteCheck::grains(g, runTime.value(), properties_.objectPath());
     const atomicFile vtp(dir/"grains.vtp");
     grainVtkWriter::writeVtp(vtp.tmpPath(), g, asciiOutput_);
     vtp.commit();

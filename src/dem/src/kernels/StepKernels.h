@@ -243,7 +243,9 @@ struct GatherKick
             g.angularVelocity.store(j, omega);
             g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
             g.pack(j);
-            return 0.0;
+            // No move; 0 v^2 is 0 unless the velocity left the numbers (then NaN, made +inf),
+            // so the step's check sees a bad velocity before the call returns.
+            return movedOrInfinity(0.0 * v.squaredNorm());
         }
         kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
