@@ -36,6 +36,9 @@ Description
 #include "permeabilityModel.H"
 #include "solidPhase.H"
 #include "fixedPressureRegion.H"
+#include "demCloud.H"
+#include "latestCompleteTime.H"
+#include "finiteCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -51,6 +54,11 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // startFrom latestTime: skip (and set aside) times a crash left
+    // incomplete, before Time picks the latest
+    latestCompleteTime::setAside(args);
+
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"
@@ -71,6 +79,7 @@ int main(int argc, char *argv[])
         k = permeability->k(solid->porosity());
 
         #include "pEqn.H"
+        finiteCheck::cells(p);
 
         // Pressure gradient back to the grains for the next step
         gradp = fvc::grad(p);
@@ -78,6 +87,8 @@ int main(int argc, char *argv[])
         solid->setPressureGradient(gradp, fluid.rho());
 
         runTime.write();
+        // Last in the time: the grains' restart state marks it complete
+        demCloud::writeState(mesh);
 
         runTime.printExecutionTime(Info);
     }

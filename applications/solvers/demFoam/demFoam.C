@@ -18,6 +18,7 @@ Description
 
 #include "fvCFD.H"
 #include "demCloud.H"
+#include "latestCompleteTime.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -28,6 +29,11 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // startFrom latestTime: skip (and set aside) times a crash left
+    // incomplete, before Time picks the latest
+    latestCompleteTime::setAside(args);
+
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -83,6 +89,8 @@ int main(int argc, char *argv[])
         }
 
         runTime.write();
+        // Last in the time: the grains' restart state marks it complete
+        cloud.writeState();
     }
 
     runTime.printExecutionTime(Info);

@@ -90,6 +90,24 @@ TEST_P(Errors, InvalidParametersAreNamed)
               std::string::npos);
 }
 
+TEST_P(Errors, BlownUpStepNamesTheGrain)
+{
+    // Explicit drag with c dt / m = 92 >> 2: the velocity grows about 90-fold per step and
+    // overflows after some 160 steps. The step stops there, naming the grain, instead of
+    // binning a NaN position into a cell.
+    dem::Parameters p = parameters();
+    p.viscousDrag = 1e6;
+    dem::System system(p);
+    dem::GrainInit g;
+    g.position = {0.5, 0.5, 0.5};
+    g.velocity = {0.0, 0.0, 1.0};
+    system.addGrains({g});
+    const std::string message = messageOf([&] { system.step(1000); });
+    std::printf("  %s\n", message.c_str());
+    EXPECT_NE(message.find("grain 0 left the numbers"), std::string::npos) << message;
+    EXPECT_NE(message.find("time step"), std::string::npos) << message;
+}
+
 DEM_TEST_ON_ALL_BACKENDS(Errors);
 
 TEST(Backends, CudaWithoutDeviceFailsClearly)

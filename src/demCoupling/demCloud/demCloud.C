@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demCloud.H"
-#include "demStateFile.H"
+#include "demLibraryCall.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -16,6 +16,7 @@ namespace Foam
 
 const char* const Foam::demCloud::topWall0Key = "demCloud.topWallInitialPosition";
 const char* const Foam::demCloud::displacement0Key = "demCloud.displacementAtStart";
+const char* const Foam::demCloud::periodicBoxKey = "demCloud.periodicBox";
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -72,42 +73,38 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         asciiOutput_ = (format == "ascii");
     }
 
-    bool fromState = false;
-    try
-    {
-        system_.reset(new dem::System(readParameters()));
-        addWalls();
-
-        const fileName statePath(mesh.time().timePath()/"demState");
-        if (isFile(statePath))
+    const fileName statePath(mesh.time().timePath()/"demState");
+    const bool fromState = isFile(statePath);
+    demLibraryCall
+    (
+        "while setting up the grains of " + properties_.objectPath(),
+        [&]
         {
-            fromState = true;
-            startFromState(statePath);
-        }
-        else
-        {
-            addGrainsFromFile();
-            checkGrainsInsideMesh(mesh.time().timePath()/"grains");
-        }
-        checkTimeStep();
-        Info<< "    backend " << system_->backendName() << ", "
-            << system_->threadCount() << " thread(s)" << endl;
-    }
-    catch (const dem::Error& err)
-    {
-        FatalIOErrorInFunction(properties_)
-            << err.what() << nl << "(while setting up the grains of "
-            << properties_.objectPath() << ")" << nl << exit(FatalIOError);
-    }
+            system_.reset(new dem::System(readParameters()));
+            addWalls();
+            if (fromState)
+            {
+                startFromState(statePath);
+            }
+            else
+            {
+                addGrainsFromFile();
+                checkGrainsInsideMesh(mesh.time().timePath()/"grains");
+            }
+            checkTimeStep();
+            Info<< "    backend " << system_->backendName() << ", "
+                << system_->threadCount() << " thread(s)" << endl;
 
-    if (topWall_ >= 0 && !fromState)
-    {
-        topWall0_ = system_->wall(topWall_).position;
-    }
-    if (displacement0_.empty())
-    {
-        displacement0_.assign(3*system_->grainCount(), 0.0);
-    }
+            if (topWall_ >= 0 && !fromState)
+            {
+                topWall0_ = system_->wall(topWall_).position;
+            }
+            if (displacement0_.empty())
+            {
+                displacement0_.assign(3*system_->grainCount(), 0.0);
+            }
+        }
+    );
 
     wallStart_ = std::chrono::steady_clock::now();
     lastReport_ = wallStart_;
@@ -174,19 +171,17 @@ void Foam::demCloud::evolve(const scalar dtFluid)
     }
 
     const auto start = std::chrono::steady_clock::now();
-    try
-    {
-        // Loads held for the fluid step, at its middle
-        updateWallStress(mesh_.time().value() - 0.5*dtFluid);
-        system_->step(nSub);
-    }
-    catch (const dem::Error& err)
-    {
-        FatalErrorInFunction
-            << err.what() << nl << "(at t = " << mesh_.time().timeName()
-            << " s, grains of " << properties_.objectPath() << ")" << nl
-            << exit(FatalError);
-    }
+    demLibraryCall
+    (
+        "at t = " + mesh_.time().timeName() + " s, grains of "
+      + properties_.objectPath(),
+        [&]
+        {
+            // Loads held for the fluid step, at its middle
+            updateWallStress(mesh_.time().value() - 0.5*dtFluid);
+            system_->step(nSub);
+        }
+    );
     stepSeconds_ += std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - start
@@ -208,7 +203,17 @@ void Foam::demCloud::deposit
     const label n = grid_.size();
     std::vector<double> phi(n), phiPred(n), u(3*n);
 
-    system_->deposit(grid_.grid(), dtFluid, phi.data(), phiPred.data(), u.data());
+    demLibraryCall
+    (
+        "depositing the grains on the mesh",
+        [&]
+        {
+            system_->deposit
+            (
+                grid_.grid(), dtFluid, phi.data(), phiPred.data(), u.data()
+            );
+        }
+    );
 
     grid_.toMesh(phi, porosity.primitiveFieldRef());
     grid_.toMesh(phiPred, predictedPorosity.primitiveFieldRef());
@@ -227,13 +232,27 @@ void Foam::demCloud::setPressureGradient
 {
     std::vector<double> g;
     grid_.toGrid(gradp.primitiveField(), g);
-    system_->setFluid(grid_.grid(), g.data(), rhoFluid);
+    demLibraryCall
+    (
+        "handing the pressure gradient to the grains",
+        [&]{ system_->setFluid(grid_.grid(), g.data(), rhoFluid); }
+    );
+}
+
+
+dem::GrainData Foam::demCloud::libraryGrains() const
+{
+    return demLibraryCall
+    (
+        "reading the grains of " + properties_.objectPath(),
+        [&]{ return system_->grains(); }
+    );
 }
 
 
 dem::GrainData Foam::demCloud::grains() const
 {
-    dem::GrainData g = system_->grains();
+    dem::GrainData g = libraryGrains();
     for (size_t i = 0; i < g.displacement.size(); ++i)
     {
         g.displacement[i] -= displacement0_[i];
@@ -244,7 +263,14 @@ dem::GrainData Foam::demCloud::grains() const
 
 Foam::scalar Foam::demCloud::topWallPosition() const
 {
-    return topWall_ >= 0 ? system_->wall(topWall_).position : GREAT;
+    if (topWall_ < 0)
+    {
+        return GREAT;
+    }
+    return demLibraryCall
+    (
+        "reading the top wall", [&]{ return system_->wall(topWall_); }
+    ).position;
 }
 
 
@@ -254,7 +280,10 @@ Foam::scalar Foam::demCloud::topWallStress() const
     {
         return 0;
     }
-    const dem::WallSpec& spec = system_->wall(topWall_).spec;
+    const dem::WallSpec spec = demLibraryCall
+    (
+        "reading the top wall", [&]{ return system_->wall(topWall_); }
+    ).spec;
     return spec.mode == dem::WallSpec::Mode::stress ? spec.normalStress : 0;
 }
 
@@ -268,7 +297,7 @@ Foam::scalar Foam::demCloud::boxArea() const
 
 Foam::scalar Foam::demCloud::meanDiameter() const
 {
-    const dem::GrainData g = system_->grains();
+    const dem::GrainData g = libraryGrains();
     scalar sum = 0;
     for (const double r : g.radius)
     {

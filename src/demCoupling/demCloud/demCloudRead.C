@@ -8,8 +8,11 @@
 #include "demCloud.H"
 #include "inputChecks.H"
 #include "demStateFile.H"
+#include "grainStartState.H"
+#include "grainsFile.H"
 #include "Enum.H"
-#include "IFstream.H"
+
+#include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -192,63 +195,13 @@ void Foam::demCloud::addWalls()
 
 void Foam::demCloud::addGrainsFromFile()
 {
-    const fileName path(mesh_.time().timePath()/"grains");
-    IFstream is(path);
-
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "Cannot read the grains: neither " << path << " (x y z r per"
-            << " line) nor a restart file "
-            << mesh_.time().timePath()/"demState" << " exists" << nl
-            << exit(FatalError);
-    }
-
-    std::vector<dem::GrainInit> grains;
-    std::string line;
-    label lineNo = 0;
-    auto& stream = is.stdStream();
-    while (std::getline(stream, line))
-    {
-        ++lineNo;
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
-        {
-            continue;
-        }
-        // x y z r, optionally followed by the velocity vx vy vz
-        std::istringstream ls(line);
-        std::vector<double> v;
-        double value;
-        while (ls >> value)
-        {
-            v.push_back(value);
-        }
-        if (!ls.eof() || (v.size() != 4 && v.size() != 7) || !(v[3] > 0))
-        {
-            FatalErrorInFunction
-                << path << " line " << lineNo << ": expected 'x y z r' or"
-                << " 'x y z r vx vy vz' with r > 0, found '" << line << "'"
-                << nl << exit(FatalError);
-        }
-        dem::GrainInit gi;
-        gi.position = {v[0], v[1], v[2]};
-        gi.radius = v[3];
-        if (v.size() == 7)
-        {
-            gi.velocity = {v[4], v[5], v[6]};
-        }
-        grains.push_back(gi);
-    }
-
-    if (grains.empty())
-    {
-        FatalErrorInFunction
-            << path << " holds no grains" << nl << exit(FatalError);
-    }
-
-    system_->addGrains(grains);
-    Info<< "    " << grains.size() << " grains from " << path << endl;
+    const grainStartState start
+    (
+        mesh_.time().timePath()/"grains", properties_, grid_.grid(), wallSpecs_
+    );
+    system_->addGrains(start.grains());
+    Info<< "    " << start.grains().size() << " grains from "
+        << mesh_.time().timePath()/"grains" << endl;
     applyGrainFlags();
 }
 
@@ -300,7 +253,7 @@ void Foam::demCloud::applyGrainFlags()
 
 void Foam::demCloud::startFromState(const fileName& path)
 {
-    dem::SystemState state(readDemState(path));
+    dem::SystemState state(demStateFile(path).read());
 
     // The cloud's own entries travel in the same file
     const auto own = [&](const char* key) -> std::vector<double>
@@ -316,6 +269,7 @@ void Foam::demCloud::startFromState(const fileName& path)
     };
     const std::vector<double> topWall0(own(topWall0Key));
     std::vector<double> displacement0(own(displacement0Key));
+    const std::vector<double> periodicBox(own(periodicBoxKey));
 
     system_->importState(state);
     checkGrainsInsideMesh(path);
@@ -332,6 +286,8 @@ void Foam::demCloud::startFromState(const fileName& path)
     const bool restart =
         mag(system_->time() - t) <= 1e-9*max(scalar(1), mag(t))
      && topWall0.size() == 1;
+
+    checkStateMatchesCase(path, periodicBox, restart);
 
     if (restart)
     {
@@ -390,6 +346,70 @@ void Foam::demCloud::checkGrainsInsideMesh(const fileName& source) const
         }
     }
     (void)zMin;
+}
+
+
+void Foam::demCloud::checkStateMatchesCase
+(
+    const fileName& path,
+    const std::vector<double>& periodicBox,
+    const bool restart
+) const
+{
+    const dem::UniformGrid& g = grid_.grid();
+    const scalar box[4] =
+    {
+        g.origin[0], g.origin[0] + g.n[0]*g.spacing[0],
+        g.origin[1], g.origin[1] + g.n[1]*g.spacing[1]
+    };
+    // Written by this code from the same mesh: equal to round-off of the
+    // mesh points (1e-9 of the box)
+    const scalar tol = 1e-9*max(box[1] - box[0], box[3] - box[2]);
+    if (periodicBox.size() == 4)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            if (mag(periodicBox[k] - box[k]) > tol)
+            {
+                // Ten digits: as the box was written in blockMeshDict
+                const auto range = [](const scalar lo, const scalar hi)
+                {
+                    std::ostringstream os;
+                    os.precision(10);
+                    os  << '[' << lo << ", " << hi << ']';
+                    return os.str();
+                };
+                FatalErrorInFunction
+                    << path << " was written for another case: its periodic"
+                    << " box is x in "
+                    << range(periodicBox[0], periodicBox[1]).c_str()
+                    << ", y in "
+                    << range(periodicBox[2], periodicBox[3]).c_str()
+                    << ", this mesh's is x in " << range(box[0], box[1]).c_str()
+                    << ", y in " << range(box[2], box[3]).c_str() << nl
+                    << exit(FatalError);
+            }
+        }
+    }
+
+    // In a restart, the grains file written beside it at the same time
+    // lists as many grains (a prepared packing copied into a case may sit
+    // beside that case's own start grains)
+    const grainsFile beside(path.path()/"grains");
+    if (!restart || !beside.found())
+    {
+        return;
+    }
+    const label listed = beside.count();
+    if (listed != label(system_->grainCount()))
+    {
+        FatalErrorInFunction
+            << path << " holds " << label(system_->grainCount())
+            << " grains but " << beside.path() << " beside it lists " << listed
+            << ": the demState comes from another case or another run."
+            << " Remove one of the two (the grains file alone starts without"
+            << " contact history)." << nl << exit(FatalError);
+    }
 }
 
 

@@ -2,38 +2,20 @@
     darcyDem: CFD-DEM for water-saturated granular material
     Licence: GPL-3.0-or-later (links OpenFOAM v1912)
 -------------------------------------------------------------------------------
-    Writing the grains at write times: restart state and ParaView files.
+    Writing the grains at write times: ParaView files and the input-format
+    grains with the fields (writeObject), then the restart state last
+    (writeState). Every file is written whole or not at all (atomicFile).
 \*---------------------------------------------------------------------------*/
 
 #include "demCloud.H"
 #include "demStateFile.H"
+#include "demLibraryCall.H"
+#include "atomicFile.H"
+#include "grainsFile.H"
+#include "finiteCheck.H"
 #include "grainVtkWriter.H"
 #include "Time.H"
 #include "OSspecific.H"
-
-#include <fstream>
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Grains in the input format 'x y z r', exact to the last digit, so that
-//- a new case can start from them (without contact history)
-void writeGrainsFile(const Foam::fileName& path, const dem::GrainData& g)
-{
-    std::ofstream os(path);
-    os.precision(17);
-    os  << "# darcyDem grains: x y z r [m], one grain per line (written at"
-        << " a write time; demState beside it holds the complete state)\n";
-    for (size_t i = 0; i < g.radius.size(); ++i)
-    {
-        os  << g.position[3*i] << ' ' << g.position[3*i + 1] << ' '
-            << g.position[3*i + 2] << ' ' << g.radius[i] << '\n';
-    }
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -46,18 +28,18 @@ bool Foam::demCloud::writeObject
     const bool
 ) const
 {
+    // Test hook: stop among OpenFOAM's field files of this time
+    atomicFile::killPoint("amongFields");
+
     const Time& runTime = mesh_.time();
     const fileName dir(runTime.timePath());
     mkDir(dir);
 
-    dem::SystemState state(system_->exportState());
-    state.reals[topWall0Key] = {topWall0_};
-    state.reals[displacement0Key] = displacement0_;
-    writeDemState(dir/"demState", state);
-
     const dem::GrainData g(grains());
-    writeGrainsFile(dir/"grains", g);
-
+    // Backs up the DEM step's own check: nothing non-finite is written (the
+    // time then has no demState and stays incomplete)
+    finiteCheck::grains(g, runTime.value(), properties_.objectPath());
+    grainsFile(dir/"grains").write(g);
     // ParaView files in <case>/VTK, where OpenFOAM's foamToVTK writes too:
     // a VTK file series lists files beside it, not in the time directories
     const fileName vtkDir(runTime.path()/"VTK");
@@ -74,6 +56,45 @@ bool Foam::demCloud::writeObject
     );
 
     return true;
+}
+
+
+void Foam::demCloud::writeState() const
+{
+    const Time& runTime = mesh_.time();
+    if (!runTime.writeTime())
+    {
+        return;
+    }
+    const fileName dir(runTime.timePath());
+    mkDir(dir);
+
+    dem::SystemState state
+    (
+        demLibraryCall
+        (
+            "exporting the grains' state", [&]{ return system_->exportState(); }
+        )
+    );
+    state.reals[topWall0Key] = {topWall0_};
+    state.reals[displacement0Key] = displacement0_;
+    const dem::UniformGrid& g = grid_.grid();
+    state.reals[periodicBoxKey] =
+    {
+        g.origin[0], g.origin[0] + g.n[0]*g.spacing[0],
+        g.origin[1], g.origin[1] + g.n[1]*g.spacing[1]
+    };
+    demStateFile(dir/"demState").write(state);
+}
+
+
+void Foam::demCloud::writeState(const objectRegistry& mesh)
+{
+    const demCloud* cloud = mesh.findObject<demCloud>("demCloud");
+    if (cloud)
+    {
+        cloud->writeState();
+    }
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainVtkWriter.H"
+#include "atomicFile.H"
 #include "OFstream.H"
 #include "foamVtkSeriesWriter.H"
 #include "OSspecific.H"
@@ -94,11 +95,11 @@ void Foam::grainVtkWriter::writeVtp
     data->GetPointData()->AddArray(contacts);
     data->GetPointData()->AddArray(flags);
 
-    // written under a temporary name and renamed: a reader (ParaView
-    // following a running case) never sees a half-written file
-    const fileName tmp(path + ".tmp");
+    // Whole or not at all (temporary renamed into place, see atomicFile):
+    // a reader (ParaView following a running case) never sees half a file
+    const atomicFile file(path);
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(tmp.c_str());
+    writer->SetFileName(file.tmpPath().c_str());
     writer->SetInputData(data);
     if (ascii)
     {
@@ -108,11 +109,12 @@ void Foam::grainVtkWriter::writeVtp
     {
         writer->SetDataModeToBinary();
     }
-    if (!writer->Write() || !Foam::mv(tmp, path))
+    if (!writer->Write())
     {
         FatalErrorInFunction
             << "VTK could not write " << path << nl << exit(FatalError);
     }
+    file.commit();
 }
 
 
@@ -134,18 +136,14 @@ void Foam::grainVtkWriter::writeSeries
     series.load(seriesPath, true, t);
     series.append(t, vtp);
 
-    const fileName tmp(seriesPath + ".tmp");
+    // Whole or not at all (temporary renamed into place, see atomicFile)
+    const atomicFile file(seriesPath);
     {
-        OFstream os(tmp);
+        OFstream os(file.tmpPath());
         os.precision(17);   // times round-trip exactly, as the time names
         series.print(os);
     }
-    if (!Foam::mv(tmp, seriesPath))
-    {
-        FatalErrorInFunction
-            << "could not rename " << tmp << " to " << seriesPath
-            << exit(FatalError);
-    }
+    file.commit();
 }
 
 

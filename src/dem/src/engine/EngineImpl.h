@@ -23,6 +23,7 @@
 #include <thrust/sort.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace dem
@@ -91,6 +92,7 @@ public:
             return;
         // Each pass over the grains ends one step and begins the next (see GatherKick).
         double moved2 = exec_.maxOf(n, KickDrift{grains_.view(), dt});
+        stopIfNotFinite(moved2);
         wallsKickDrift(dt);
         for (int s = 0; s < nSteps; ++s)
         {
@@ -102,6 +104,7 @@ public:
             computeForces(dt);
             const bool last = s + 1 == nSteps;
             moved2 = exec_.maxOf(n, gatherKick(dt, dt, !last));
+            stopIfNotFinite(moved2);
             wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
                 wallsKickDrift(dt);
@@ -259,6 +262,47 @@ private:
 
     CellGridView cellGrid();
     void rebuild();
+    void stopIfFlownOff(); //!< before a rebuild: throwLeftTheNumbers if grains are absurdly far
+
+    //- Throw when the step's largest squared move moved2 is not finite (before a NaN reaches a
+    //- cell index): see throwLeftTheNumbers.
+    void stopIfNotFinite(double moved2)
+    {
+        if (!(moved2 <= std::numeric_limits<double>::max()))
+            throwLeftTheNumbers();
+    }
+
+    //- Throw naming the first grain whose position or velocity is not finite, else the one
+    //- farthest out or fastest (a step far too large for the loads).
+    [[noreturn]] void throwLeftTheNumbers()
+    {
+        const int n = grains_.size();
+        Exec::forEach(n, UnpackGrains{grains_.view()});
+        const std::vector<double> x = grains_.hostReal(fPosition), v = grains_.hostReal(fVelocity);
+        const std::vector<int> id = grains_.hostInt(fId);
+        int worst = 0;
+        double worstSize = -1.0;
+        for (int i = 0; i < n && worstSize <= std::numeric_limits<double>::max(); ++i)
+            for (int d = 0; d < 3; ++d)
+            {
+                const double size = std::fabs(x[std::size_t(d) * n + i]) +
+                                    std::fabs(v[std::size_t(d) * n + i]); // NaN stays NaN
+                if (!(size <= worstSize))
+                {
+                    worst = i;
+                    worstSize = std::isnan(size) ? HUGE_VAL : size;
+                }
+            }
+        const int i = worst;
+        std::ostringstream msg;
+        msg.precision(10);
+        msg << "grain " << id[i] << " left the numbers at step " << steps_ + 1 << " (t = " << time_
+            << " s): position (" << x[i] << ' ' << x[n + i] << ' ' << x[2 * n + i]
+            << "), velocity (" << v[i] << ' ' << v[n + i] << ' ' << v[2 * n + i]
+            << "); the time step " << params_.timeStep
+            << " s is too large for the loads (stiffness, drag, fluid force)";
+        throw Error(msg.str());
+    }
 
     //- The backend's execution state (CUDA: cached temporary storage and scratch for the
     //- reductions; the CPU's is empty). Mutable: read-back methods reduce too.

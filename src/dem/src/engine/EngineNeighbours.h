@@ -70,10 +70,32 @@ CellGridView EngineImpl<Exec>::cellGrid()
 }
 
 template <class Exec>
+void EngineImpl<Exec>::stopIfFlownOff()
+{
+    // Grains spread over more than 1e8 cells of one diameter are not a packing but a blown-up
+    // step; binned, their image and cell indices would overflow an int.
+    const int n = grains_.size();
+    const double* radius = grains_.real(fRadius);
+    const double rMax = thrust::reduce(exec_.policy(), radius, radius + n, 0.0, MaxOp());
+    const double reach = 1e8 * (2.0 * rMax + params_.neighbourSkin);
+    for (int d = 0; d < 3; ++d)
+    {
+        const double* x = grains_.real(fPosition) + long(d) * n;
+        const double lower = thrust::reduce(exec_.policy(), x, x + n,
+                                            std::numeric_limits<double>::infinity(), MinOp());
+        const double upper = thrust::reduce(exec_.policy(), x, x + n,
+                                            -std::numeric_limits<double>::infinity(), MaxOp());
+        if (!(upper - lower <= reach))
+            throwLeftTheNumbers();
+    }
+}
+
+template <class Exec>
 void EngineImpl<Exec>::rebuild()
 {
     const int n = grains_.size();
     const BoxView box = boxView();
+    stopIfFlownOff();
     Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.integer(fImage), box, n});
 
     // Sort by cell: grains of a cell become contiguous and neighbours close in memory.

@@ -10,6 +10,8 @@
 
 #include "kernels/Views.h"
 
+#include <cmath>
+
 namespace dem
 {
 namespace detail
@@ -51,7 +53,14 @@ DEM_HD void packBuildPosition(const GrainView& g, int i)
     b[3] = 0.0;
 }
 
-//- First kick and drift of a step() call; returns |x - x_build|^2.
+//- A moved distance^2 for the step's max reduction, NaN made +inf: a max drops NaN, and a
+//- grain that left the numbers must stop the step (EngineImpl::stopIfNotFinite).
+DEM_HD double movedOrInfinity(double moved2)
+{
+    return moved2 == moved2 ? moved2 : HUGE_VAL;
+}
+
+//- First kick and drift of a step() call; returns |x - x_build|^2 (see movedOrInfinity).
 struct KickDrift
 {
     GrainView g;
@@ -68,7 +77,7 @@ struct KickDrift
         g.position.store(i, x);
         g.pack(i);
         packBuildPosition(g, i);
-        return (x - g.positionAtBuild(i)).squaredNorm();
+        return movedOrInfinity((x - g.positionAtBuild(i)).squaredNorm());
     }
 };
 

@@ -142,6 +142,10 @@ struct PairForceKernel
         return Vector3d(x, y, z);
     }
 
+    //- Squared fraction of the radii sum below which two centres count as coincident (1e-12:
+    //- far below any physical overlap, far above where 1/distance overflows).
+    static constexpr double kCoincidentFraction2 = 1e-24;
+
     DEM_HD void operator()(long p) const
     {
         const long i = pairs.owner[p], j = pairs.partner[p];
@@ -151,9 +155,18 @@ struct PairForceKernel
         const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
         const double sumRadii = ri + rj;
         const double distance2 = d.squaredNorm();
-        const bool touching = distance2 < sumRadii * sumRadii;
-        const double distance = std::sqrt(touching ? distance2 : 1.0);
-        const Vector3d n = d * (1.0 / distance);
+        const double sumRadii2 = sumRadii * sumRadii;
+        const bool touching = distance2 < sumRadii2;
+        // Coincident centres (a duplicated grain) have no direction: the distance is floored at
+        // kCoincidentFraction of the radii sum and the normal is +z, so the pair is pushed apart
+        // along z by the full-overlap spring force instead of dividing by zero. Selects only:
+        // the loop stays vectorised, and other pairs get the same arithmetic as before.
+        const double floor2 = kCoincidentFraction2 * sumRadii2;
+        const bool coincident = distance2 < floor2;
+        const double distance = std::sqrt(touching ? (coincident ? floor2 : distance2) : 1.0);
+        const double inverse = 1.0 / distance;
+        const Vector3d n(coincident ? 0.0 : d.x() * inverse, coincident ? 0.0 : d.y() * inverse,
+                         coincident ? 1.0 : d.z() * inverse);
         const double overlap = sumRadii - distance;
 
         const long cs = pairs.stride();
@@ -230,7 +243,9 @@ struct GatherKick
             g.angularVelocity.store(j, omega);
             g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
             g.pack(j);
-            return 0.0;
+            // No move; 0 v^2 is 0 unless the velocity left the numbers (then NaN, made +inf),
+            // so the step's check sees a bad velocity before the call returns.
+            return movedOrInfinity(0.0 * v.squaredNorm());
         }
         kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
@@ -241,7 +256,7 @@ struct GatherKick
             vw[4 + c] = omega[c];
         }
         const double* b = g.packedPositionAtBuild + 4L * j;
-        return (x - Vector3d(b[0], b[1], b[2])).squaredNorm();
+        return movedOrInfinity((x - Vector3d(b[0], b[1], b[2])).squaredNorm());
     }
 };
 

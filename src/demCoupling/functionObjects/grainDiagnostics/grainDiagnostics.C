@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainDiagnostics.H"
+#include "demLibraryCall.H"
 #include "demCloud.H"
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
@@ -80,92 +81,100 @@ bool Foam::functionObjects::grainDiagnostics::execute()
 
 bool Foam::functionObjects::grainDiagnostics::write()
 {
-    const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
-    const dem::System& dem = cloud.system();
-    const dem::GrainData g = cloud.grains();
-    const label n = g.radius.size();
-
-    // Sample height between the lowest lower wall and the top wall
-    scalar bottom = GREAT;
-    for (int w = 0; w < dem.wallCount(); ++w)
-    {
-        const dem::WallData wall = dem.wall(w);
-        if (wall.spec.side == dem::WallSpec::Side::lower)
+    // Reads of the DEM library: whatever it throws ends as a FatalError
+    return demLibraryCall
+    (
+        "function object " + name(),
+        [&]
         {
-            bottom = min(bottom, wall.position);
+            const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
+            const dem::System& dem = cloud.system();
+            const dem::GrainData g = cloud.grains();
+            const label n = g.radius.size();
+
+            // Sample height between the lowest lower wall and the top wall
+            scalar bottom = GREAT;
+            for (int w = 0; w < dem.wallCount(); ++w)
+            {
+                const dem::WallData wall = dem.wall(w);
+                if (wall.spec.side == dem::WallSpec::Side::lower)
+                {
+                    bottom = min(bottom, wall.position);
+                }
+            }
+
+            scalar shiftX = 0, kinetic = 0, grainVolume = 0;
+            label nPrescribed = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                const scalar r = g.radius[i];
+                const scalar m = g.mass[i];
+                scalar v2 = 0, w2 = 0;
+                for (int d = 0; d < 3; ++d)
+                {
+                    v2 += sqr(g.velocity[3*i + d]);
+                    w2 += sqr(g.angularVelocity[3*i + d]);
+                }
+                kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
+                grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
+                if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
+                {
+                    shiftX += g.displacement[3*i];
+                    ++nPrescribed;
+                }
+            }
+
+            const scalar top = cloud.topWallPosition();
+            const scalar height =
+                (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
+            const scalar strain =
+                (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
+            const scalar t = dem.time();
+            const scalar impulse = dem.prescribedGrainImpulseX();
+            const scalar tau =
+                -(hasLast_ && t > lastTime_
+                ? (impulse - lastImpulse_)/(t - lastTime_)
+                : dem.prescribedGrainForceX())/cloud.boxArea();
+            lastTime_ = t;
+            lastImpulse_ = impulse;
+            hasLast_ = true;
+            const scalar sigma0 = cloud.topWallStress();
+
+            scalar pMin = 0, pMean = 0, pMax = 0;
+            if (mesh_.foundObject<volScalarField>("p"))
+            {
+                const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
+                pMin = min(p.primitiveField());
+                pMax = max(p.primitiveField());
+                pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
+            }
+
+            // Conservation of the deposit, before any porosity clamp
+            const dem::UniformGrid& grid = cloud.grid().grid();
+            std::vector<double> solid(grid.cellCount());
+            dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
+            scalar deposited = 0;
+            for (const double s : solid)
+            {
+                deposited += s;
+            }
+
+            Ostream& os = file();
+            writeCurrentTime(os);
+            os  << tab << strain << tab << tau << tab
+                << (sigma0 > 0 ? tau/sigma0 : 0) << tab
+                << (cloud.hasTopWall() ? (top - cloud.topWallInitialPosition())
+                    /cloud.meanDiameter() : 0) << tab
+                << (cloud.hasTopWall() ? top : 0) << tab
+                << pMin << tab << pMean << tab << pMax << tab
+                << kinetic << tab
+                << (n ? 2.0*dem.contactCount()/n : 0) << tab
+                << cloud.particleStepsPerSecond() << tab
+                << (grainVolume > 0 ? deposited/grainVolume - 1 : 0) << endl;
+
+            return true;
         }
-    }
-
-    scalar shiftX = 0, kinetic = 0, grainVolume = 0;
-    label nPrescribed = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = g.radius[i];
-        const scalar m = g.mass[i];
-        scalar v2 = 0, w2 = 0;
-        for (int d = 0; d < 3; ++d)
-        {
-            v2 += sqr(g.velocity[3*i + d]);
-            w2 += sqr(g.angularVelocity[3*i + d]);
-        }
-        kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
-        grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
-        if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
-        {
-            shiftX += g.displacement[3*i];
-            ++nPrescribed;
-        }
-    }
-
-    const scalar top = cloud.topWallPosition();
-    const scalar height =
-        (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
-    const scalar strain =
-        (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
-    const scalar t = dem.time();
-    const scalar impulse = dem.prescribedGrainImpulseX();
-    const scalar tau =
-        -(hasLast_ && t > lastTime_
-        ? (impulse - lastImpulse_)/(t - lastTime_)
-        : dem.prescribedGrainForceX())/cloud.boxArea();
-    lastTime_ = t;
-    lastImpulse_ = impulse;
-    hasLast_ = true;
-    const scalar sigma0 = cloud.topWallStress();
-
-    scalar pMin = 0, pMean = 0, pMax = 0;
-    if (mesh_.foundObject<volScalarField>("p"))
-    {
-        const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
-        pMin = min(p.primitiveField());
-        pMax = max(p.primitiveField());
-        pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
-    }
-
-    // Conservation of the deposit, before any porosity clamp
-    const dem::UniformGrid& grid = cloud.grid().grid();
-    std::vector<double> solid(grid.cellCount());
-    dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
-    scalar deposited = 0;
-    for (const double s : solid)
-    {
-        deposited += s;
-    }
-
-    Ostream& os = file();
-    writeCurrentTime(os);
-    os  << tab << strain << tab << tau << tab
-        << (sigma0 > 0 ? tau/sigma0 : 0) << tab
-        << (cloud.hasTopWall() ? (top - cloud.topWallInitialPosition())
-            /cloud.meanDiameter() : 0) << tab
-        << (cloud.hasTopWall() ? top : 0) << tab
-        << pMin << tab << pMean << tab << pMax << tab
-        << kinetic << tab
-        << (n ? 2.0*dem.contactCount()/n : 0) << tab
-        << cloud.particleStepsPerSecond() << tab
-        << (grainVolume > 0 ? deposited/grainVolume - 1 : 0) << endl;
-
-    return true;
+    );
 }
 
 
