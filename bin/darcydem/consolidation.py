@@ -231,10 +231,12 @@ class Study:
             k_face.append(self.mu * q * self.dz / dp_col.mean())
         flux = np.array(flux)
         self.phi_layers = np.array([at(phi, i).mean() for i in range(nl)])
+        self.k_layers = np.array([at(k, i).mean() for i in range(nl)])
         self.k_faces = np.array(k_face)
         self.k_faces_relErr = float(flux.std() / flux.mean())
         self.layer_results = {"porosity": self.phi_layers.tolist(),
                               "k_face": self.k_faces.tolist(),
+                              "k": self.k_layers.tolist(),
                               "fluxSpread": self.k_faces_relErr}
 
     # 4, 5 ---------------------------------------------------------------
@@ -343,11 +345,9 @@ class Study:
         p_step = np.sqrt(np.mean((p_half - ref["p"][pwin]) ** 2))
         U_half = np.interp(ref["Tv"][uwin], half["Tv"], half["U"])
         U_step = np.sqrt(np.mean((U_half - ref["U"][uwin]) ** 2))
-        # the spread a single c_v can have: c_v of each layer (its k the
-        # harmonic mean of its boundaries'), Terzaghi with the smallest and largest
-        k_layer = self.k_faces.copy()
-        k_layer[1:] = 2 / (1 / self.k_faces[1:] + 1 / self.k_faces[:-1])
-        cv_layers = consolidation_coefficient(k_layer, self.mu, self.E_layers[:-1], phi,
+        # the spread a single c_v can have: c_v of each layer (its cells' k,
+        # Kozeny-Carman of their porosity), Terzaghi with the smallest and largest
+        cv_layers = consolidation_coefficient(self.k_layers, self.mu, self.E_layers[:-1], phi,
                                               self.beta)
         Tp = ref["Tp"][pwin]
         U0 = instantaneous_settlement(self.porosity, self.beta, self.E_oed)

@@ -9,7 +9,6 @@ usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
 (after `source etc/bashrc`; run at most two at a time on two cores)"""
 
 import json
-import math
 import sys
 
 from darcydem.case import copy_tutorial
@@ -33,7 +32,6 @@ def run_case_from_prepared(seed, case):
     run_seed prepared for this seed (its consolidate stage), so that the
     cases of one seed can run side by side."""
     import os
-    import numpy as np
     from darcydem.case import TEST_RUNS, Case
     s = ShearStudy.__new__(ShearStudy)
     path = os.path.join(TEST_RUNS, "shearNoise_seed%d" % seed)
