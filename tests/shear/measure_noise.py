@@ -9,9 +9,11 @@ usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
 (after `source etc/bashrc`; run at most two at a time on two cores)"""
 
 import json
+import os
+import re
 import sys
 
-from darcydem.case import copy_tutorial
+from darcydem.case import TEST_RUNS, Case, copy_tutorial
 from darcydem.shear import IMPERMEABLE_KC, PERMEABLE_KC, ShearStudy
 
 
@@ -31,8 +33,6 @@ def run_case_from_prepared(seed, case):
     """One case ('dry', 'permeable', 'impermeable') on the packing that
     run_seed prepared for this seed (its consolidate stage), so that the
     cases of one seed can run side by side."""
-    import os
-    from darcydem.case import TEST_RUNS, Case
     s = ShearStudy.__new__(ShearStudy)
     path = os.path.join(TEST_RUNS, "shearNoise_seed%d" % seed)
     ShearStudy.__init__(s, path, "test")
@@ -41,7 +41,7 @@ def run_case_from_prepared(seed, case):
     b = Case.existing(os.path.join(s.stages, "consolidate"))
     s.prepared = b.file(os.path.join(s.last_time(b), "demState"))
     s.height = float(s.diagnostics(b)["wall"][-1])
-    import re  # the mesh of the consolidate stage
+    # the mesh of the consolidate stage
     block = open(b.file("system/blockMeshDict")).read()
     s.cells_z = int(re.search(r"\bnz\s+(\d+);", block).group(1))
     kc = {"dry": None, "permeable": PERMEABLE_KC, "impermeable": IMPERMEABLE_KC}[case]
