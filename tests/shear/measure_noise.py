@@ -4,7 +4,8 @@ other makeGrains seeds and writes tests/run/shearNoise_seed<N>/results.json.
 Not a test (minutes per seed); its numbers are in tests/README.md.
 
 usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
-       python3 tests/shear/measure_noise.py SEED dry|permeable|impermeable
+       python3 tests/shear/measure_noise.py SEED CASE   (dry, permeable, impermeable,
+                                                   impermeable_halfMu, impermeable_halfVelocity)
        (one case on the packing a first run prepared for SEED)
 (after `source etc/bashrc`; run at most two at a time on two cores)"""
 
@@ -30,7 +31,8 @@ def run_seed(seed):
 
 
 def run_case_from_prepared(seed, case):
-    """One case ('dry', 'permeable', 'impermeable') on the packing that
+    """One case (dry, permeable, impermeable, impermeable_halfMu,
+    impermeable_halfVelocity) on the packing that
     run_seed prepared for this seed (its consolidate stage), so that the
     cases of one seed can run side by side."""
     s = ShearStudy.__new__(ShearStudy)
@@ -44,8 +46,13 @@ def run_case_from_prepared(seed, case):
     # the mesh of the consolidate stage
     block = open(b.file("system/blockMeshDict")).read()
     s.cells_z = int(re.search(r"\bnz\s+(\d+);", block).group(1))
-    kc = {"dry": None, "permeable": PERMEABLE_KC, "impermeable": IMPERMEABLE_KC}[case]
-    r = s.shear(case + "_parallel", kc=kc)
+    rate = s.s["rateStrain"]
+    kwargs = {"dry": {}, "permeable": dict(kc=PERMEABLE_KC),
+              "impermeable": dict(kc=IMPERMEABLE_KC),
+              "impermeable_halfMu": dict(kc=IMPERMEABLE_KC, mu_factor=0.5, strain=rate),
+              "impermeable_halfVelocity": dict(kc=IMPERMEABLE_KC, velocity_factor=0.5,
+                                               strain=rate)}[case]
+    r = s.shear(case + "_parallel", **kwargs)
     with open(os.path.join(path, "results_%s.json" % case), "w") as f:
         json.dump(r, f, indent=2)
 
