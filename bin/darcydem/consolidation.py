@@ -119,7 +119,7 @@ class Study:
     def oedometer(self, end=0.08):
         c = self.stage("oedometer", "demFoam", self.prepared)
         self.dry(c, end, drag=QUASI_STATIC_DRAG)
-        # the grains at eight times: the tail's mean gives the strain profile
+        # the grains at 16 times: the mean over the tail gives the strain profile
         c.set("system/controlDict", "writeInterval", end / 16)
         c.set("constant/demProperties", "walls/top/normalStress", LOAD_HISTORY)
         c.run("demFoam")
@@ -186,7 +186,6 @@ class Study:
         c.set("system/controlDict", "writeFormat", "ascii")
         c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % dp)
         c.run("darcyDemFoam")
-        self.permeability_case = c
         name = c.times()[-1][1]
         C = c.cell_centres()
         q = read_internal_field(c.file(os.path.join(name, "qDarcy")))
