@@ -84,3 +84,42 @@ def ramp_loaded_consolidation(Tv, Tramp, U0, terms=200):
     U = U0 * load + (1 - U0) * U_cons
     p_base = np.sum(2 / M * np.sin(M) * integral, axis=1)
     return U, p_base
+
+
+def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
+                          drained_top=0.0, E_top=np.inf):
+    """Consolidation of a column of layers that differ in porosity, stiffness
+    and permeability: the finite-volume form, on the layers of the mesh, of
+        (phi beta + (1 - phi)/E_oed) dp/dt = d/dz(k/mu dp/dz) + (1/E_oed) dsigma/dt
+    (the grains feel -V grad p, eq. 12, as in consolidation_coefficient),
+    closed at the base, p = 0 in the cell above the top layer. Layer i has
+    thickness dz, porosity[i] and E_oed[i]; k_face[i] is the permeability
+    between layer i and i + 1 (the last one towards the drained cell, whose
+    centre is dz above the top layer's). The load rises linearly from 0 to
+    load over 0 <= t <= ramp and is then held. Exact in time (eigenmodes of
+    the layer system). A drained layer of thickness drained_top and modulus
+    E_top on top (in the drained cell, under the lid) settles with the load.
+    Returns (p[time, layer], settlement[time])."""
+    porosity, E_oed, k_face = (np.asarray(a, dtype=float) for a in (porosity, E_oed, k_face))
+    n = len(porosity)
+    storage = porosity * beta + (1 - porosity) / E_oed
+    cond = k_face / (mu * dz * dz)  # flux per pressure difference, per layer thickness
+    A = np.zeros((n, n))
+    for i in range(n):
+        A[i, i] += cond[i]
+        if i + 1 < n:
+            A[i, i + 1] -= cond[i]
+            A[i + 1, i] -= cond[i]
+            A[i + 1, i + 1] += cond[i]
+    s = 1 / np.sqrt(storage)
+    lam, V = np.linalg.eigh(s[:, None] * A * s[None, :])
+    c = V.T @ (s / E_oed)  # modal share of the loading rate
+    t = np.atleast_1d(np.asarray(t, dtype=float))[:, None]
+    t_end = np.minimum(t, ramp)
+    # each mode: da/dt = -lam a + c load/ramp while loading
+    modes = c * (load / ramp) * (np.exp(-lam * (t - t_end)) - np.exp(-lam * t)) / lam
+    p = (modes @ V.T) * s
+    sigma = load * t_end[:, 0] / ramp
+    settlement = dz * np.sum((sigma[:, None] - (1 - porosity) * p) / E_oed, axis=1) \
+        + drained_top * sigma / E_top
+    return p, settlement

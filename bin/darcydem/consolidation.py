@@ -29,7 +29,8 @@ import sys
 import numpy as np
 
 from darcydem.analytic import (consolidation_coefficient, instantaneous_settlement,
-                               ramp_loaded_consolidation, undrained_pressure)
+                               layered_consolidation, ramp_loaded_consolidation,
+                               undrained_pressure)
 from darcydem.case import Case
 from darcydem.foamfiles import read_internal_field, read_probes, read_scalar_entry
 
@@ -103,6 +104,7 @@ class Study:
         b.run("demFoam")
         d = self.diagnostics(b)
         self.prepared = self.last_state(b)
+        self.prepared_grains = b.file(os.path.join(b.times()[-1][1], "grains"))
         return {"grains": len(grains), "lidHeight": d["wall"][-1],
                 "kineticEnergyEnd": d["kinetic"][-1]}
 
@@ -119,15 +121,59 @@ class Study:
     def oedometer(self, end=0.08):
         c = self.stage("oedometer", "demFoam", self.prepared)
         self.dry(c, end, drag=QUASI_STATIC_DRAG)
+        # the grains at 16 times: the mean over the tail gives the strain profile
+        c.set("system/controlDict", "writeInterval", end / 16)
         c.set("constant/demProperties", "walls/top/normalStress", LOAD_HISTORY)
         c.run("demFoam")
+        self.oedometer_case = c
         d = self.diagnostics(c)
         h0 = self.height0 = d["wall"][0]  # lid height above the base at the first step
         tail = d["wall"][d["t"] > 0.75 * end]
         settle = h0 - tail.mean()  # the lid still rocks a little on the packing
         self.E_oed = LOAD * h0 / settle
+        self.oedometer_settlement = settle
         return {"E_oed": self.E_oed, "settlement": settle, "height": h0,
                 "tailDrift": float(tail.max() - tail.min())}
+
+    def stiffness_profile(self, end=0.08):
+        """E_oed of each mesh layer below the lid's cell, and of the part of
+        the packing in the lid's cell, from the grains' settlement in the
+        oedometer (mean over the writes of its tail, t > 0.75 end): the
+        load step adds the same stress LOAD at every height, so a layer
+        that shortens by s is E = LOAD dz / s. The settlement at each layer
+        boundary is a linear fit through the grains within dz/2 of it (its
+        standard error is the measurement error); zero at the base, the
+        lid's at the top."""
+        z0 = np.loadtxt(self.prepared_grains, comments="#")[:, 2]
+        c = self.oedometer_case
+        tail = [name for t, name in c.times() if t > 0.75 * end + 1e-12]
+        u = np.mean([z0 - np.loadtxt(c.file(os.path.join(n, "grains")), comments="#")[:, 2]
+                     for n in tail], axis=0)
+        nl = self.k_wall
+        edges = [0.0]
+        u_edge, u_err = [0.0], [0.0]
+        for e in range(1, nl + 1):
+            ze = e * self.dz
+            near = np.abs(z0 - ze) < self.dz / 2
+            X = np.column_stack([np.ones(near.sum()), z0[near] - ze])
+            coef, res, _, _ = np.linalg.lstsq(X, u[near], rcond=None)
+            cov = np.linalg.inv(X.T @ X) * float(res[0]) / (near.sum() - 2)
+            edges.append(ze)
+            u_edge.append(coef[0])
+            u_err.append(np.sqrt(cov[0, 0]))
+        edges.append(self.height0)
+        u_edge.append(self.oedometer_settlement)
+        u_err.append(0.0)
+        edges, u_edge, u_err = (np.array(a) for a in (edges, u_edge, u_err))
+        shortening = u_edge[1:] - u_edge[:-1]
+        shortening_err = np.hypot(u_err[1:], u_err[:-1])
+        if np.any(shortening <= 2 * shortening_err):
+            raise RuntimeError("consolidation: a layer of the oedometer does not shorten "
+                               "measurably: %s m" % shortening)
+        E = LOAD * np.diff(edges) / shortening
+        self.E_layers, self.E_layers_relErr = E, shortening_err / shortening
+        return {"layerTops": edges[1:].tolist(), "E_oed": E.tolist(),
+                "E_oed_relErr": self.E_layers_relErr.tolist()}
 
     # 3 ------------------------------------------------------------------
     def permeability(self, dp=1000.0):
@@ -152,10 +198,47 @@ class Study:
         inside = C[:, 2] < (k_wall - 1) * self.dz  # cells below the lid's cell and its neighbour
         q_mean = q[inside, 2].mean()
         self.k = self.mu * q_mean * drained_at / dp
+        self.k_wall = k_wall
+        self.layer_permeability(c, name, C)
         self.drainage_length = drained_at
         self.porosity = float(phi[inside].mean())
         return {"k": self.k, "drainageLength": drained_at, "porosity": self.porosity,
                 "fluxSpread": float(q[inside, 2].std() / q_mean)}
+
+    def layer_permeability(self, c, name, C):
+        """Porosity of each mesh layer below the lid's cell and the
+        permeability between layers from the steady flow: the flux through
+        each layer boundary (the solver's face permeability, the mean of the
+        two cells' k, times the pressure difference, summed over the
+        columns of cells) over the difference of the layers' mean pressures.
+        At steady state every layer boundary carries the same flux; its
+        spread over the boundaries is the measurement error."""
+        p = read_internal_field(c.file(os.path.join(name, "p")))
+        k = read_internal_field(c.file(os.path.join(name, "k")))
+        phi = read_internal_field(c.file(os.path.join(name, "porosity")))
+        layer = np.floor(C[:, 2] / self.dz + 1e-9).astype(int)
+        column = np.round(C[:, 0] * 1e6).astype(np.int64) * 10**9 + np.round(C[:, 1] * 1e6)
+        columns = np.unique(column)
+        nl = self.k_wall
+
+        def at(field, i):  # field[column, layer i], columns in a fixed order
+            return np.array([field[(column == col) & (layer == i)][0] for col in columns])
+
+        flux, k_face = [], []
+        for i in range(nl):
+            dp_col = at(p, i) - at(p, i + 1)
+            q = np.mean(0.5 * (at(k, i) + at(k, i + 1)) * dp_col) / (self.mu * self.dz)
+            flux.append(q)
+            k_face.append(self.mu * q * self.dz / dp_col.mean())
+        flux = np.array(flux)
+        self.phi_layers = np.array([at(phi, i).mean() for i in range(nl)])
+        self.k_layers = np.array([at(k, i).mean() for i in range(nl)])
+        self.k_faces = np.array(k_face)
+        self.k_faces_relErr = float(flux.std() / flux.mean())
+        self.layer_results = {"porosity": self.phi_layers.tolist(),
+                              "k_face": self.k_faces.tolist(),
+                              "k": self.k_layers.tolist(),
+                              "fluxSpread": self.k_faces_relErr}
 
     # 4, 5 ---------------------------------------------------------------
     def consolidate(self, name, dt, end):
@@ -177,6 +260,7 @@ class Study:
         results["prepare"] = self.prepare()
         results["oedometer"] = self.oedometer()
         results["permeability"] = self.permeability()
+        results["layers"] = dict(self.stiffness_profile(), **self.layer_results)
         cv = consolidation_coefficient(self.k, self.mu, self.E_oed, self.porosity, self.beta)
         H = self.drainage_length
         end = 1.5 * H**2 / cv
@@ -212,11 +296,82 @@ class Study:
             "basePressureEnd/p0": float(ref["p"][-1]),
             "halfStepMaxChange": float(np.max(np.abs(U_half[window] - ref["U"][window]))),
         }
+        results["comparison"].update(self.layered_comparison(ref, half, p0, s_inf, cv, H))
+        results["layers"]["c_v"] = results["comparison"].pop("c_v_layers")
         self.curves = curves
         self.results = results
         with open(os.path.join(self.dir, "results.json"), "w") as f:
             json.dump(results, f, indent=2)
         return results
+
+    def layered(self, t, E=None, k_face=None):
+        """The layered column's (base pressure, settlement) at times t."""
+        E = self.E_layers if E is None else E
+        k_face = self.k_faces if k_face is None else k_face
+        p, s = layered_consolidation(t, self.dz, self.phi_layers, E[:-1], k_face, self.mu,
+                                     self.beta, LOAD, RAMP,
+                                     drained_top=self.height0 - self.k_wall * self.dz,
+                                     E_top=E[-1])
+        return p[:, 0], s
+
+    def layered_comparison(self, ref, half, p0, s_inf, cv, H, draws=300):
+        """Base pressure and settlement against the layered column with the
+        measured E_oed and k of each layer. Tolerance: three times the rms
+        (over the compared window) of the standard deviation of the
+        prediction under the measurement errors of E_oed (the fits' standard
+        errors) and k (the spread of the steady flux over the layer
+        boundaries, and the change of k with the porosity as the packing
+        settles), and of the change of the measured curve with half the
+        coupling step (time discretisation and the grains' chaotic noise)."""
+        tp, tw = ref["Tp"] * H**2 / cv, ref["Tv"] * H**2 / cv
+        pwin = (ref["Tp"] >= 0.05) & (ref["Tp"] <= 1.5)
+        uwin = (ref["Tv"] >= 0.05) & (ref["Tv"] <= 1.5)
+        p_lay, _ = self.layered(tp[pwin])
+        _, s_lay = self.layered(tw[uwin])
+        # Kozeny-Carman k ~ phi^3/(1 - phi)^2: the settling packing loses
+        # dphi = (1 - phi) LOAD/E of porosity, dk/k = (3/phi + 2/(1 - phi)) dphi
+        phi = self.phi_layers
+        dk_settling = np.max((3 / phi + 2 / (1 - phi)) * (1 - phi) * LOAD / self.E_layers[:-1])
+        k_rel = float(np.hypot(self.k_faces_relErr, dk_settling))
+        rng = np.random.default_rng(1)
+        ps, ss = [], []
+        for _ in range(draws):
+            E = self.E_layers * (1 + self.E_layers_relErr * rng.standard_normal(len(self.E_layers)))
+            k = self.k_faces * (1 + k_rel * rng.standard_normal(len(self.k_faces)))
+            ps.append(self.layered(tp[pwin], E, k)[0])
+            ss.append(self.layered(tw[uwin], E, k)[1])
+        p_sd = np.sqrt(np.mean(np.std(ps, axis=0) ** 2)) / p0
+        s_sd = np.sqrt(np.mean(np.std(ss, axis=0) ** 2)) / s_inf
+        p_half = np.interp(ref["Tp"][pwin], half["Tp"], half["p"])
+        p_step = np.sqrt(np.mean((p_half - ref["p"][pwin]) ** 2))
+        U_half = np.interp(ref["Tv"][uwin], half["Tv"], half["U"])
+        U_step = np.sqrt(np.mean((U_half - ref["U"][uwin]) ** 2))
+        # the spread a single c_v can have: c_v of each layer (its cells' k,
+        # Kozeny-Carman of their porosity), Terzaghi with the smallest and largest
+        cv_layers = consolidation_coefficient(self.k_layers, self.mu, self.E_layers[:-1], phi,
+                                              self.beta)
+        Tp = ref["Tp"][pwin]
+        U0 = instantaneous_settlement(self.porosity, self.beta, self.E_oed)
+        p_lo = ramp_loaded_consolidation(Tp * cv_layers.min() / cv,
+                                         self.Tramp * cv_layers.min() / cv, U0)[1]
+        p_hi = ramp_loaded_consolidation(Tp * cv_layers.max() / cv,
+                                         self.Tramp * cv_layers.max() / cv, U0)[1]
+        self.layered_curves = {"Tp": ref["Tp"][pwin], "p": p_lay / p0,
+                               "Tv": ref["Tv"][uwin], "U": s_lay / s_inf}
+        return {
+            "layered_basePressure_rmsError": float(np.sqrt(np.mean(
+                (ref["p"][pwin] - p_lay / p0) ** 2))),
+            "layered_basePressure_tolerance": float(3 * np.hypot(p_sd, p_step)),
+            "layered_basePressure_measurementSd": float(p_sd),
+            "layered_basePressure_halfStepRms": float(p_step),
+            "layered_U_rmsError": float(np.sqrt(np.mean((ref["U"][uwin] - s_lay / s_inf) ** 2))),
+            "layered_U_tolerance": float(3 * np.hypot(s_sd, U_step)),
+            "layered_U_measurementSd": float(s_sd),
+            "layered_k_relErr": k_rel,
+            "c_v_layers": cv_layers.tolist(),
+            "terzaghi_cvMinMax_basePressure_rmsDistance": float(np.sqrt(np.mean(
+                (p_hi - p_lo) ** 2))),
+        }
 
     def plot(self):
         import matplotlib
@@ -238,6 +393,10 @@ class Study:
         a1.set_title("Settlement; rms misfit %.3f" % cmp_["U_rmsError(0.05<=Tv<=1.5)"])
         a1.set_xlim(0, 1.5)
         a1.legend()
+        lay = getattr(self, "layered_curves", None)
+        if lay:
+            a1.plot(lay["Tv"], lay["U"], "r:", lw=2, label="layered column, measured E_oed, k")
+            a2.plot(lay["Tp"], lay["p"], "r:", lw=2, label="layered column, measured E_oed, k")
         a2.set_xlabel("T_v")
         a2.set_ylabel("excess pore pressure at the base / p0")
         a2.set_title("Base pressure; p0 = dsigma/((1-phi) + phi beta E)")

@@ -10,19 +10,40 @@ is dsigma/((1 - phi) + phi beta E_oed), and a share U0 = phi beta E/((1 - phi)
 + phi beta E) of the settlement happens at once; the load is ramped over
 0.02 s and the theory superposed over the ramp.
 
-Tolerances (measured values in tests/README.md): settlement within 0.08 of
-the final settlement (rms over 0.05 <= T_v <= 1.5; measured 0.053), base
-pressure within 0.15 p0 (rms; measured 0.135), and halving the coupling
-interval changes the settlement curve by less than 2 % of the final
-settlement (measured 0.07 %). The base pressure falls faster than Terzaghi
-at first and slower in the tail (tests/README.md): one c_v from one secant
-E_oed and one k cannot describe a packing whose stiffness and permeability
-are not uniform over its 14 grain layers."""
+One c_v from one secant E_oed and one k cannot describe a packing whose
+stiffness and permeability vary over its 14 grain layers. So the study also
+measures E_oed of each mesh layer (the oedometer's settlement profile from
+the grains' displacements) and the permeability between the layers (the
+steady flow's pressure profile through the fixed grains), and solves the
+same consolidation on that layered column (analytic.layered_consolidation:
+the finite-volume equations of the solver's layers, exact in time).
+
+Tolerances (measured values in tests/README.md):
+- settlement against the layered column: three times the rms (over
+  0.05 <= T_v <= 1.5) of the prediction's standard deviation under the
+  measurement errors of E_oed and k, combined with the change of the
+  measured curve with half the coupling step; computed by the study;
+- base pressure against Terzaghi with the single c_v: the rms distance
+  between Terzaghi's curves for the smallest and the largest c_v of the
+  layers (what one c_v cannot resolve). The layered column explains the
+  settlement's misfit but only part of the base pressure's: the measured
+  base pressure falls faster than the layered column's right after the
+  load ramp (while the lid still rings) and slower in the tail; that
+  comparison is printed, not asserted;
+- settlement against Terzaghi: 0.08 of the final settlement (rms);
+- halving the coupling interval changes the settlement curve by less than
+  2 % of the final settlement;
+- the layered solver itself reduces to Terzaghi for uniform layers at
+  second order in the layer thickness (no case run)."""
 
 import json
 
+import numpy as np
 import pytest
 
+from darcydem.analytic import (consolidation_coefficient, instantaneous_settlement,
+                               layered_consolidation, ramp_loaded_consolidation,
+                               undrained_pressure)
 from darcydem.case import copy_tutorial
 from darcydem.consolidation import Study
 
@@ -50,9 +71,51 @@ def test_settlement_follows_terzaghi(study):
 
 def test_excess_pressure_dissipates_as_terzaghi(study):
     cmp_ = study["comparison"]
-    assert cmp_["basePressure_rmsError"] < 0.15
+    bound = cmp_["terzaghi_cvMinMax_basePressure_rmsDistance"]
+    print(f"base pressure against Terzaghi (one c_v): rms {cmp_['basePressure_rmsError']:.3f} p0;"
+          f" Terzaghi with the layers' smallest and largest c_v {study['layers']['c_v']}"
+          f" differ by rms {bound:.3f} p0")
+    assert cmp_["basePressure_rmsError"] < bound
     assert cmp_["basePressureEnd/p0"] < 0.1
+
+
+def test_layered_column_with_measured_stiffness_and_permeability(study):
+    cmp_, lay = study["comparison"], study["layers"]
+    print(f"layers: porosity {np.round(lay['porosity'], 3).tolist()}, E_oed "
+          f"{np.round(lay['E_oed'], -4).tolist()} Pa (relative errors "
+          f"{np.round(lay['E_oed_relErr'], 3).tolist()}), k between layers "
+          f"{lay['k_face']} m^2 (relative error {cmp_['layered_k_relErr']:.3f})")
+    for key in ("basePressure", "U"):
+        print(f"{key} against the layered column: rms {cmp_['layered_%s_rmsError' % key]:.3f}"
+              f" (measurement SD {cmp_['layered_%s_measurementSd' % key]:.3f}), tolerance "
+              f"{cmp_['layered_%s_tolerance' % key]:.3f}")
+    assert cmp_["layered_U_rmsError"] < cmp_["layered_U_tolerance"]
 
 
 def test_halving_the_coupling_interval(study):
     assert study["comparison"]["halfStepMaxChange"] < 0.02
+
+
+def test_layered_column_reduces_to_terzaghi():
+    # uniform layers, drained at the centre of the cell above the top one
+    # (H = (n + 1/2) dz, as in the solver), ramp T_v = 0.05: the base cell
+    # and the settlement converge to Terzaghi at second order in dz
+    phi, E, k, mu, beta, load, H = 0.4, 1e7, 1e-10, 1e-3, 1e-8, 1e4, 0.1
+    cv = consolidation_coefficient(k, mu, E, phi, beta)
+    Tv = np.linspace(0.05, 1.5, 200)
+    U_exact, p_exact = ramp_loaded_consolidation(Tv, 0.05, instantaneous_settlement(phi, beta, E))
+    p0 = undrained_pressure(load, phi, beta, E)
+    errors = []
+    for n in (6, 12, 24):
+        dz = H / (n + 0.5)
+        p, s = layered_consolidation(Tv * H**2 / cv, dz, np.full(n, phi), np.full(n, E),
+                                     np.full(n, k), mu, beta, load, 0.05 * H**2 / cv,
+                                     drained_top=dz / 2, E_top=E)
+        errors.append((np.sqrt(np.mean((p[:, 0] / p0 - p_exact) ** 2)),
+                       np.sqrt(np.mean((s * E / (load * H) - U_exact) ** 2))))
+    errors = np.array(errors)
+    order = np.log2(errors[:-1] / errors[1:])
+    print(f"layered column, uniform layers n = 6, 12, 24: rms errors base pressure "
+          f"{errors[:, 0]}, settlement {errors[:, 1]}; order {order.ravel()}")
+    assert np.all(order > 1.8)
+    assert errors[0, 0] < 0.01 and errors[0, 1] < 0.01  # 6 layers, as in the case

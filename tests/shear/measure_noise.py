@@ -1,0 +1,65 @@
+"""Measure the seed-to-seed noise of the shear test's comparisons: runs the
+study of tests/shear/test_shear.py (size 'test') from packings made with
+other makeGrains seeds and writes tests/run/shearNoise_seed<N>/results.json.
+Not a test (minutes per seed); its numbers are in tests/README.md.
+
+usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
+       python3 tests/shear/measure_noise.py SEED CASE   (dry, permeable, impermeable,
+                                                   impermeable_halfMu, impermeable_halfVelocity)
+       (one case on the packing a first run prepared for SEED)
+(after `source etc/bashrc`; run at most two at a time on two cores)"""
+
+import json
+import os
+import re
+import sys
+
+from darcydem.case import TEST_RUNS, Case, copy_tutorial
+from darcydem.shear import IMPERMEABLE_KC, PERMEABLE_KC, ShearStudy
+
+
+def run_seed(seed):
+    s = ShearStudy(copy_tutorial("shear", "shearNoise_seed%d" % seed), "test")
+    s.s["seed"] = s.results["settings"]["seed"] = seed
+    r = s.run()
+    r["dryHalfVelocity"] = s.shear("dry_half", velocity_factor=0.5)
+    r["impermeableHalfMu"] = s.shear("impermeable_halfMu", kc=IMPERMEABLE_KC, mu_factor=0.5,
+                                     strain=s.s["rateStrain"])
+    r["impermeableHalfVelocity"] = s.shear("impermeable_halfVelocity", kc=IMPERMEABLE_KC,
+                                           velocity_factor=0.5, strain=s.s["rateStrain"])
+    s.write_results()
+
+
+def run_case_from_prepared(seed, case):
+    """One case (dry, permeable, impermeable, impermeable_halfMu,
+    impermeable_halfVelocity) on the packing that
+    run_seed prepared for this seed (its consolidate stage), so that the
+    cases of one seed can run side by side."""
+    s = ShearStudy.__new__(ShearStudy)
+    path = os.path.join(TEST_RUNS, "shearNoise_seed%d" % seed)
+    ShearStudy.__init__(s, path, "test")
+    s.s["seed"] = seed
+    s.curves = {}
+    b = Case.existing(os.path.join(s.stages, "consolidate"))
+    s.prepared = b.file(os.path.join(s.last_time(b), "demState"))
+    s.height = float(s.diagnostics(b)["wall"][-1])
+    # the mesh of the consolidate stage
+    block = open(b.file("system/blockMeshDict")).read()
+    s.cells_z = int(re.search(r"\bnz\s+(\d+);", block).group(1))
+    rate = s.s["rateStrain"]
+    kwargs = {"dry": {}, "permeable": dict(kc=PERMEABLE_KC),
+              "impermeable": dict(kc=IMPERMEABLE_KC),
+              "impermeable_halfMu": dict(kc=IMPERMEABLE_KC, mu_factor=0.5, strain=rate),
+              "impermeable_halfVelocity": dict(kc=IMPERMEABLE_KC, velocity_factor=0.5,
+                                               strain=rate)}[case]
+    r = s.shear(case + "_parallel", **kwargs)
+    with open(os.path.join(path, "results_%s.json" % case), "w") as f:
+        json.dump(r, f, indent=2)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 3 and not sys.argv[2].isdigit():
+        run_case_from_prepared(int(sys.argv[1]), sys.argv[2])
+    else:
+        for a in sys.argv[1:]:
+            run_seed(int(a))
