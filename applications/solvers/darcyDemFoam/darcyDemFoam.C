@@ -86,9 +86,13 @@ int main(int argc, char *argv[])
         qDarcy = -k/fluid.mu()*gradp;
         solid->setPressureGradient(gradp, fluid.rho());
 
+        // A time is written between two marks (latestCompleteTime): a run
+        // killed in between leaves a time that a restart sets aside
+        latestCompleteTime::beginWrite(runTime);
         runTime.write();
-        // Last in the time: the grains' restart state marks it complete
+        // Last in the time: the grains' restart state
         demCloud::writeState(mesh);
+        latestCompleteTime::endWrite(runTime);
 
         runTime.printExecutionTime(Info);
     }

@@ -88,9 +88,13 @@ int main(int argc, char *argv[])
                 << nl << endl;
         }
 
+        // A time is written between two marks (latestCompleteTime): a run
+        // killed in between leaves a time that a restart sets aside
+        latestCompleteTime::beginWrite(runTime);
         runTime.write();
-        // Last in the time: the grains' restart state marks it complete
+        // Last in the time: the grains' restart state
         cloud.writeState();
+        latestCompleteTime::endWrite(runTime);
     }
 
     runTime.printExecutionTime(Info);

@@ -6,30 +6,13 @@
 #include "latestCompleteTime.H"
 #include "demStateFile.H"
 #include "IFstream.H"
+#include "OFstream.H"
 #include "dictionary.H"
 #include "OSspecific.H"
 #include "TimePaths.H"
 #include "SubList.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-bool Foam::latestCompleteTime::hasGrains(const fileName& casePath)
-{
-    if (!isFile(casePath/"constant"/"demProperties"))
-    {
-        return false;
-    }
-    const fileName darcy(casePath/"constant"/"darcyProperties");
-    if (!isFile(darcy))
-    {
-        return true; // demFoam
-    }
-    IFstream is(darcy);
-    const dictionary dict(is);
-    const dictionary* solid = dict.findDict("solidPhase");
-    return solid && solid->getOrDefault<word>("type", word::null) == "demGrains";
-}
-
 
 bool Foam::latestCompleteTime::startsFromLatestTime(const fileName& casePath)
 {
@@ -43,17 +26,50 @@ bool Foam::latestCompleteTime::startsFromLatestTime(const fileName& casePath)
 }
 
 
+bool Foam::latestCompleteTime::incomplete(const fileName& dir)
+{
+    return
+        isFile(dir/markName)
+     && !demStateFile(dir/"demState").complete();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const char* const Foam::latestCompleteTime::markName = ".writeInProgress";
+
+
+void Foam::latestCompleteTime::beginWrite(const Time& runTime)
+{
+    if (!runTime.writeTime())
+    {
+        return;
+    }
+    const fileName dir(runTime.timePath());
+    mkDir(dir);
+    OFstream mark(dir/markName);
+    mark.flush();
+    if (!mark.good())
+    {
+        FatalErrorInFunction
+            << "Cannot create " << dir/markName << nl << exit(FatalError);
+    }
+}
+
+
+void Foam::latestCompleteTime::endWrite(const Time& runTime)
+{
+    if (runTime.writeTime())
+    {
+        rm(runTime.timePath()/markName);
+    }
+}
+
 
 Foam::label Foam::latestCompleteTime::setAside(const argList& args)
 {
     const fileName casePath(args.path());
-    if
-    (
-        args.found("time")
-     || !startsFromLatestTime(casePath)
-     || !hasGrains(casePath)
-    )
+    if (args.found("time") || !startsFromLatestTime(casePath))
     {
         return 0;
     }
@@ -65,11 +81,13 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
         times = instantList(SubList<instant>(times, times.size() - 1, 1));
     }
     label moved = 0;
-    for (label i = times.size() - 1; i > 0; --i)
+    for (label i = times.size() - 1; i >= 0; --i)
     {
         const fileName dir(casePath/times[i].name());
-        if (demStateFile(dir/"demState").complete())
+        if (!incomplete(dir))
         {
+            // Killed after its last file, before the mark was removed
+            rm(dir/markName);
             break;
         }
         if (!mvBak(dir, "incomplete"))
@@ -80,10 +98,18 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
         }
         ++moved;
         Warning
-            << "Time " << times[i].name() << " is incomplete (no whole "
-            << "demState: the run writing it was stopped mid-write); moved"
+            << "Time " << times[i].name() << " is incomplete (the run"
+            << " writing it was stopped mid-write: " << markName << " is"
+            << " still there and no whole demState); moved"
             << " to " << dir << ".incomplete and not used for the restart"
             << endl;
+    }
+    if (moved == times.size())
+    {
+        FatalErrorInFunction
+            << "Every time directory of " << casePath << " is incomplete"
+            << " (set aside as <time>.incomplete): nothing to restart from"
+            << nl << exit(FatalError);
     }
     if (moved)
     {
