@@ -321,6 +321,21 @@ class ShearStudy:
         self.write_results()
         return r
 
+    def run_with_checks(self):
+        """run(), then the cases the shear test compares beside it: the dry
+        shear at half the velocity (rate independence) and the velocity-
+        scaling pair (impermeable at v with mu_f/2, and at v/2 with mu_f)."""
+        r = self.run()
+        strain = self.s["rateStrain"]
+        r["dryHalfVelocity"] = self.shear("dry_half", velocity_factor=0.5)
+        r["impermeableHalfMu"] = self.shear("impermeable_halfMu", kc=IMPERMEABLE_KC,
+                                            mu_factor=0.5, strain=strain)
+        r["impermeableHalfVelocity"] = self.shear("impermeable_halfVelocity",
+                                                  kc=IMPERMEABLE_KC, velocity_factor=0.5,
+                                                  strain=strain)
+        self.write_results()
+        return r
+
     def write_results(self):
         with open(os.path.join(self.dir, "results.json"), "w") as f:
             json.dump(self.results, f, indent=2)

@@ -56,6 +56,7 @@ import numpy as np
 import pytest
 
 from darcydem.case import Case
+from darcydem.lattices import expanding_lattice
 
 BETA = 1e-8
 RATE = 0.2          # expansion rate [1/s]
@@ -64,17 +65,6 @@ T = 0.01            # length of each leg [s]
 REST = 0.0005       # at rest before and after [s]
 DT = 1e-4
 PROBES = [(0.01, 0.01, 0.11), (0.01, 0.01, 0.13)]
-
-
-def lattice(radius=0.004, spacing=0.01):
-    rows = []
-    for k in range(12):
-        z = 0.065 + k * spacing
-        for j in range(4):
-            for i in range(4):
-                rows.append((0.005 + i * spacing, 0.005 + j * spacing, z, radius,
-                             0.0, 0.0, RATE * (z - ZC)))
-    return rows
 
 
 def add_probes(c, probes):
@@ -105,7 +95,7 @@ def run_legs(name, form, legs, scheme="Euler", probes=PROBES):
     porosity, its rate and p of all steps."""
     c = Case("closedBox", name)
     with open(c.file("0/grains"), "w") as f:
-        for x, y, z, r, *_ in lattice():
+        for x, y, z, r, *_ in expanding_lattice(RATE, ZC):
             f.write("%.17g %.17g %.17g %.17g\n" % (x, y, z, r))
     c.set("constant/darcyProperties", "solidPhase/porosityRate", form)
     c.set("system/controlDict", "deltaT", DT)

@@ -18,21 +18,11 @@ import pytest
 
 from darcydem.analytic import undrained_pressure_change
 from darcydem.case import Case
+from darcydem.lattices import expanding_lattice
 
 BETA = 1e-8
 DZ = 0.02            # cubic cells
 ZC = 0.12            # centre of the expansion
-
-
-def lattice(rate, radius=0.004, spacing=0.01):
-    rows = []
-    for k in range(12):
-        z = 0.065 + k * spacing
-        for j in range(4):
-            for i in range(4):
-                rows.append((0.005 + i * spacing, 0.005 + j * spacing, z, radius,
-                             0.0, 0.0, rate * (z - ZC)))
-    return rows
 
 
 @pytest.mark.parametrize("rate", [0.2, -0.2])
@@ -40,7 +30,7 @@ def test_undrained_dilation_with_grains(rate):
     c = Case("closedBox", f"closed_box_{rate:+g}")
     with open(c.file("0/grains"), "w") as f:
         f.write("# x y z r vx vy vz\n")
-        for row in lattice(rate):
+        for row in expanding_lattice(rate, ZC):
             f.write(" ".join("%.12g" % v for v in row) + "\n")
     c.set("system/controlDict", "endTime", 0.05)
     c.set("system/controlDict", "writeInterval", 125)

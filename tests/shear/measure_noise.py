@@ -21,13 +21,7 @@ from darcydem.shear import IMPERMEABLE_KC, PERMEABLE_KC, ShearStudy
 def run_seed(seed):
     s = ShearStudy(copy_tutorial("shear", "shearNoise_seed%d" % seed), "test")
     s.s["seed"] = s.results["settings"]["seed"] = seed
-    r = s.run()
-    r["dryHalfVelocity"] = s.shear("dry_half", velocity_factor=0.5)
-    r["impermeableHalfMu"] = s.shear("impermeable_halfMu", kc=IMPERMEABLE_KC, mu_factor=0.5,
-                                     strain=s.s["rateStrain"])
-    r["impermeableHalfVelocity"] = s.shear("impermeable_halfVelocity", kc=IMPERMEABLE_KC,
-                                           velocity_factor=0.5, strain=s.s["rateStrain"])
-    s.write_results()
+    s.run_with_checks()
 
 
 def run_case_from_prepared(seed, case):

@@ -46,7 +46,7 @@ import math
 import pytest
 
 from darcydem.case import copy_tutorial
-from darcydem.shear import IMPERMEABLE_KC, ShearStudy
+from darcydem.shear import ShearStudy
 
 K_ONE_SIDED = 3.09  # P(N(0,1) < -3.09) = 1e-3
 K_TWO_SIDED = 3.29  # P(|N(0,1)| > 3.29) = 1e-3
@@ -63,13 +63,7 @@ SCALING_SD = 0.04             # relative difference of the velocity-scaling pair
 def study():
     path = copy_tutorial("shear", "shear")
     s = ShearStudy(path, "test")
-    r = s.run()
-    r["dryHalfVelocity"] = s.shear("dry_half", velocity_factor=0.5)
-    r["impermeableHalfMu"] = s.shear("impermeable_halfMu", kc=IMPERMEABLE_KC, mu_factor=0.5,
-                                     strain=s.s["rateStrain"])
-    r["impermeableHalfVelocity"] = s.shear("impermeable_halfVelocity", kc=IMPERMEABLE_KC,
-                                           velocity_factor=0.5, strain=s.s["rateStrain"])
-    s.write_results()
+    r = s.run_with_checks()
     s.plot()
     print(json.dumps({k: v for k, v in r.items() if k != "settings"}, indent=1))
     return r
