@@ -68,6 +68,14 @@ class RunError(RuntimeError):
     """An application exited non-zero; carries the tail of its log."""
 
 
+def fatal_message(log):
+    """The FOAM FATAL (IO) ERROR part of a solver's log, printed (its start)
+    so that the test log records what the user would read."""
+    text = log[log.find("FOAM FATAL"):]
+    print(text[:700])
+    return text
+
+
 class Case:
     def __init__(self, template, name, template_root=TEST_TEMPLATES, run_root=TEST_RUNS):
         """Copy template_root/template to run_root/name (replacing it)."""

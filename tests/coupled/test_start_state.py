@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from darcydem.case import Case
+from darcydem.case import Case, fatal_message
 
 GRAINS = "0/grains"
 
@@ -37,17 +37,11 @@ def write_grains(c, head, grains):
             f.write(" ".join("%.12g" % v for v in g) + "\n")
 
 
-def fatal(log):
-    text = log[log.find("FOAM FATAL"):]
-    print(text[:700])
-    return text
-
-
 def test_duplicated_line_is_refused_naming_both_grains():
     c = column("start_duplicate")
     head, grains = grain_lines(c)
     write_grains(c, head, grains[:11] + [grains[10]] + grains[11:])  # grain 10 twice
-    msg = fatal(c.run("darcyDemFoam", expect_fail=True))
+    msg = fatal_message(c.run("darcyDemFoam", expect_fail=True))
     assert "FOAM FATAL IO ERROR" in msg and "0/grains" in msg
     assert "grain 10 (line 13)" in msg and "grain 11 (line 14)" in msg
     # overlap = r + r at distance 0, as a fraction of r
@@ -62,7 +56,7 @@ def test_big_overlap_is_refused_with_its_size():
     (x0, y0, z0, r0), (_, _, _, r1) = grains[0], grains[1]
     grains[1] = [x0 + 0.5 * (r0 + r1), y0, z0, r1]
     write_grains(c, head, grains)
-    msg = fatal(c.run("darcyDemFoam", expect_fail=True))
+    msg = fatal_message(c.run("darcyDemFoam", expect_fail=True))
     expected = 100 * 0.5 * (r0 + r1) / min(r0, r1)
     found = float(re.search(r"overlap ([0-9.e+-]+) % of the smaller radius", msg).group(1))
     print(f"overlap reported {found} %, expected {expected} %")
@@ -76,7 +70,7 @@ def test_grain_outside_the_periodic_box_is_refused_unless_wrapped():
     head, grains = grain_lines(c)
     grains[5][0] += 7.4  # 74 box lengths to the right (a user's x = 7.5 m)
     write_grains(c, head, grains)
-    msg = fatal(c.run("darcyDemFoam", expect_fail=True))
+    msg = fatal_message(c.run("darcyDemFoam", expect_fail=True))
     assert "grain 5 (line 8)" in msg and "outside the periodic box, x in [0, 0.1)" in msg
     assert "wrapGrains yes;" in msg
 
@@ -92,7 +86,7 @@ def test_grain_above_the_top_wall_is_refused():
     head, grains = grain_lines(c)
     grains[7][2] = 0.39  # the lid is at z = 0.38, the mesh ends at 0.4
     write_grains(c, head, grains)
-    msg = fatal(c.run("darcyDemFoam", expect_fail=True))
+    msg = fatal_message(c.run("darcyDemFoam", expect_fail=True))
     assert "grain 7 (line 10)" in msg and "above the upper wall at z = 0.38" in msg
 
 
@@ -103,6 +97,6 @@ def test_dem_library_exception_is_a_foam_fatal_error():
     c = column("start_library_throws")
     c.set("constant/demProperties", "neighbourSkin", 0.05)
     log = c.run("darcyDemFoam", expect_fail=True)
-    msg = fatal(log)
+    msg = fatal_message(log)
     assert "FOAM FATAL ERROR" in msg and "periodic box length" in msg
     assert "terminate called" not in log and "Aborted" not in log

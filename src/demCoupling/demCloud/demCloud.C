@@ -89,7 +89,6 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             else
             {
                 addGrainsFromFile();
-                checkGrainsInsideMesh(mesh.time().timePath()/"grains");
             }
             checkTimeStep();
             Info<< "    backend " << system_->backendName() << ", "

@@ -269,7 +269,7 @@ void Foam::demCloud::startFromState(const fileName& path)
     };
     const std::vector<double> topWall0(own(topWall0Key));
     std::vector<double> displacement0(own(displacement0Key));
-    const std::vector<double> periodicBox(own(periodicBoxKey));
+    const std::vector<double> stateBox(own(periodicBoxKey));
 
     system_->importState(state);
     checkGrainsInsideMesh(path);
@@ -287,7 +287,7 @@ void Foam::demCloud::startFromState(const fileName& path)
         mag(system_->time() - t) <= 1e-9*max(scalar(1), mag(t))
      && topWall0.size() == 1;
 
-    checkStateMatchesCase(path, periodicBox, restart);
+    checkStateMatchesCase(path, stateBox, restart);
 
     if (restart)
     {
@@ -323,7 +323,6 @@ void Foam::demCloud::checkGrainsInsideMesh(const fileName& source) const
 {
     const dem::GrainData g = system_->grains();
     const dem::UniformGrid& grid = grid_.grid();
-    const scalar zMin = grid.origin[2];
     const scalar zMax = grid.origin[2] + grid.n[2]*grid.spacing[2];
 
     for (size_t i = 0; i < g.radius.size(); ++i)
@@ -345,31 +344,36 @@ void Foam::demCloud::checkGrainsInsideMesh(const fileName& source) const
             }
         }
     }
-    (void)zMin;
+}
+
+
+std::vector<double> Foam::demCloud::periodicBox() const
+{
+    const dem::UniformGrid& g = grid_.grid();
+    return
+    {
+        g.origin[0], g.origin[0] + g.n[0]*g.spacing[0],
+        g.origin[1], g.origin[1] + g.n[1]*g.spacing[1]
+    };
 }
 
 
 void Foam::demCloud::checkStateMatchesCase
 (
     const fileName& path,
-    const std::vector<double>& periodicBox,
+    const std::vector<double>& stateBox,
     const bool restart
 ) const
 {
-    const dem::UniformGrid& g = grid_.grid();
-    const scalar box[4] =
-    {
-        g.origin[0], g.origin[0] + g.n[0]*g.spacing[0],
-        g.origin[1], g.origin[1] + g.n[1]*g.spacing[1]
-    };
+    const std::vector<double> box(periodicBox());
     // Written by this code from the same mesh: equal to round-off of the
     // mesh points (1e-9 of the box)
     const scalar tol = 1e-9*max(box[1] - box[0], box[3] - box[2]);
-    if (periodicBox.size() == 4)
+    if (stateBox.size() == 4)
     {
         for (int k = 0; k < 4; ++k)
         {
-            if (mag(periodicBox[k] - box[k]) > tol)
+            if (mag(stateBox[k] - box[k]) > tol)
             {
                 // Ten digits: as the box was written in blockMeshDict
                 const auto range = [](const scalar lo, const scalar hi)
@@ -382,9 +386,9 @@ void Foam::demCloud::checkStateMatchesCase
                 FatalErrorInFunction
                     << path << " was written for another case: its periodic"
                     << " box is x in "
-                    << range(periodicBox[0], periodicBox[1]).c_str()
+                    << range(stateBox[0], stateBox[1]).c_str()
                     << ", y in "
-                    << range(periodicBox[2], periodicBox[3]).c_str()
+                    << range(stateBox[2], stateBox[3]).c_str()
                     << ", this mesh's is x in " << range(box[0], box[1]).c_str()
                     << ", y in " << range(box[2], box[3]).c_str() << nl
                     << exit(FatalError);

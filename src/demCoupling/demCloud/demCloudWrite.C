@@ -78,12 +78,7 @@ void Foam::demCloud::writeState() const
     );
     state.reals[topWall0Key] = {topWall0_};
     state.reals[displacement0Key] = displacement0_;
-    const dem::UniformGrid& g = grid_.grid();
-    state.reals[periodicBoxKey] =
-    {
-        g.origin[0], g.origin[0] + g.n[0]*g.spacing[0],
-        g.origin[1], g.origin[1] + g.n[1]*g.spacing[1]
-    };
+    state.reals[periodicBoxKey] = periodicBox();
     demStateFile(dir/"demState").write(state);
 }
 

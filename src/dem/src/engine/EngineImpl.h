@@ -260,9 +260,8 @@ private:
         forcesStale_ = false;
     }
 
-    CellGridView cellGrid();
+    CellGridView cellGrid(); //!< also throwLeftTheNumbers if grains are absurdly far apart
     void rebuild();
-    void stopIfFlownOff(); //!< before a rebuild: throwLeftTheNumbers if grains are absurdly far
 
     //- Throw when the step's largest squared move moved2 is not finite (before a NaN reaches a
     //- cell index): see throwLeftTheNumbers.

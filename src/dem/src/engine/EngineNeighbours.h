@@ -31,6 +31,12 @@ CellGridView EngineImpl<Exec>::cellGrid()
                                   -std::numeric_limits<double>::infinity(), MaxOp());
     }
     double cellSize = 2.0 * rMax + params_.neighbourSkin;
+    // Grains spread over more than 1e8 cells of one diameter are not a packing but a blown-up
+    // step; binned, their image and cell indices would overflow an int. (Called before the
+    // wrap into the periodic box, so the periodic sides are measured too.)
+    for (int d = 0; d < 3; ++d)
+        if (!(upper[d] - lower[d] <= 1e8 * cellSize))
+            throwLeftTheNumbers();
     for (int d = 0; d < 2; ++d)
         if (box.periodic[d] && box.length[d] < 2.0 * cellSize)
             throw Error("periodic box length " + std::to_string(box.length[d]) + " m in " +
@@ -70,36 +76,16 @@ CellGridView EngineImpl<Exec>::cellGrid()
 }
 
 template <class Exec>
-void EngineImpl<Exec>::stopIfFlownOff()
-{
-    // Grains spread over more than 1e8 cells of one diameter are not a packing but a blown-up
-    // step; binned, their image and cell indices would overflow an int.
-    const int n = grains_.size();
-    const double* radius = grains_.real(fRadius);
-    const double rMax = thrust::reduce(exec_.policy(), radius, radius + n, 0.0, MaxOp());
-    const double reach = 1e8 * (2.0 * rMax + params_.neighbourSkin);
-    for (int d = 0; d < 3; ++d)
-    {
-        const double* x = grains_.real(fPosition) + long(d) * n;
-        const double lower = thrust::reduce(exec_.policy(), x, x + n,
-                                            std::numeric_limits<double>::infinity(), MinOp());
-        const double upper = thrust::reduce(exec_.policy(), x, x + n,
-                                            -std::numeric_limits<double>::infinity(), MaxOp());
-        if (!(upper - lower <= reach))
-            throwLeftTheNumbers();
-    }
-}
-
-template <class Exec>
 void EngineImpl<Exec>::rebuild()
 {
     const int n = grains_.size();
     const BoxView box = boxView();
-    stopIfFlownOff();
+    // The grid before the wrap: its bounds on the non-periodic sides do not change with it,
+    // and a blown-up step is caught before image counts overflow (see cellGrid).
+    CellGridView cells = cellGrid();
     Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.integer(fImage), box, n});
 
     // Sort by cell: grains of a cell become contiguous and neighbours close in memory.
-    CellGridView cells = cellGrid();
     const int cellCount = cells.n[0] * cells.n[1] * cells.n[2];
     cellKey_.resize(n);
     order_.resize(n);
