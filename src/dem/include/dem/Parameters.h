@@ -26,7 +26,17 @@ enum class GrainFlag : std::int32_t
     translationOnly = 3     //!< free translation, no rotation (sliding blocks, tests)
 };
 
-//- Linear spring-dashpot contact with Coulomb friction (doc/EQUATIONS.md section 1).
+//- The contact laws (a run-time family; doc/EQUATIONS.md section 1 and the snow section).
+enum class ContactLaw
+{
+    linearSpring, //!< linear spring-dashpot, Coulomb friction (Damsgaard et al. 2015)
+    snow          //!< unfrozen ice contact of Johnson & Hopkins (2005): k_n from E and the radii
+};
+
+//- A contact law and its constants. linearSpring uses the stiffnesses and dampings given here;
+//- snow derives them per pair: k_n = E pi Rbar / 2 (Rbar the mean radius; a wall counts as the
+//- grain's radius), k_t = tangentialToNormalStiffness k_n, dashpots as fractions of critical
+//- damping for the pair's reduced mass; its normal force never pulls.
 struct ContactMaterial
 {
     double normalStiffness = 1.16e9;     //!< k_n [N/m]
@@ -34,6 +44,12 @@ struct ContactMaterial
     double normalDamping = 0.0;          //!< gamma_n [N s/m], force -gamma_n * approach speed
     double tangentialDamping = 0.0;      //!< gamma_t [N s/m]
     double friction = 0.5;               //!< mu, |f_t| <= mu |f_n|
+    ContactLaw law = ContactLaw::linearSpring;
+    // snow only:
+    double youngsModulus = 0.0;               //!< E [Pa]
+    double tangentialToNormalStiffness = 0.6; //!< k_t / k_n
+    double normalDampingRatio = 0.0;          //!< c_n / (2 sqrt(m* k_n))
+    double tangentialDampingRatio = 0.0;      //!< c_t / (2 sqrt(m* k_t))
 };
 
 //- A plane z = position bounding the grains from below (lower) or above (upper).
@@ -82,11 +98,16 @@ struct Parameters
     int maxPairsPerGrain = 0;
 };
 
-//- One grain to add.
+//- One grain to add: a sphere, or a capsule (a core segment of length 2 coreHalfLength along
+//- the body z axis, dilated by radius). Spheres and capsules mix freely in one System.
 struct GrainInit
 {
-    std::array<double, 3> position{0.0, 0.0, 0.0};
+    std::array<double, 3> position{0.0, 0.0, 0.0}; //!< centre (the core segment's midpoint)
     double radius = 0.01;
+    double coreHalfLength = 0.0; //!< half the core segment's length [m]; 0: a sphere
+    //- Body-to-global rotation as a unit quaternion (w, x, y, z); the capsule axis is
+    //- rotate(orientation, (0, 0, 1)). Normalised when added (refused far from unit length).
+    std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};
     double density = 0.0; //!< <= 0: Parameters::defaultDensity
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
     std::array<double, 3> angularVelocity{0.0, 0.0, 0.0};

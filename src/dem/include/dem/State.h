@@ -27,6 +27,9 @@ struct GrainData
     std::vector<double> fluidForce;
     std::vector<double> torque;
     std::vector<double> radius;
+    std::vector<double> coreHalfLength; //!< 0 for a sphere
+    std::vector<double> orientation;    //!< 4 per grain (w, x, y, z), body to global
+    std::vector<double> volume;         //!< true solid volume (capsule: pi r^2 L + 4/3 pi r^3)
     std::vector<double> mass;
     std::vector<int> contactCount; //!< touching grain-grain contacts (walls not counted)
     std::vector<GrainFlag> flag;
