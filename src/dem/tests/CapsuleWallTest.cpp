@@ -86,7 +86,8 @@ TEST_P(CapsuleWall, HorizontalCapsuleRestsOnBothEnds)
     // Two contacts share the weight: each end sinks weight / (2 k_n) (one contact: twice that).
     const double expected = 0.01 - weight / (2.0 * kn);
     // z component of the axis R e_z
-    const double axisZ = 1 - 2 * (g.orientation[1] * g.orientation[1] + g.orientation[2] * g.orientation[2]);
+    const double axisZ =
+        1 - 2 * (g.orientation[1] * g.orientation[1] + g.orientation[2] * g.orientation[2]);
     std::printf("  wall force %.12f N, weight %.12f N; height %.12e m, expected %.12e m; axis z "
                 "%.1e\n",
                 system.wall(0).grainForce, weight, g.position[2], expected, axisZ);
@@ -163,8 +164,8 @@ TEST_P(CapsuleWall, MixedPackingSettlesAboveTheWall)
         const dem::GrainData g = system.grains();
         largest = std::max(largest, kineticEnergy(g));
         if (block % 5 == 4)
-            std::printf("  t %.2f s: kinetic energy %.3e J (translation %.3e J)\n",
-                        system.time(), kineticEnergy(g), kineticEnergy(g, false));
+            std::printf("  t %.2f s: kinetic energy %.3e J (translation %.3e J)\n", system.time(),
+                        kineticEnergy(g), kineticEnergy(g, false));
         if (block == 39)
             before = kineticEnergy(g);
     }
@@ -185,8 +186,8 @@ TEST_P(CapsuleWall, MixedPackingSettlesAboveTheWall)
                 "point %.3e m; deepest overlap %.3e m (grains %d, %d); wall force %.6f N, "
                 "weight %.6f N\n",
                 g.mass.size(), system.contactCount(), final, translation, largest, lowest,
-                deepest.overlap,
-                deepest.first, deepest.second, system.wall(0).grainForce, totalWeight);
+                deepest.overlap, deepest.first, deepest.second, system.wall(0).grainForce,
+                totalWeight);
     // At rest: the translational kinetic energy below 1e-6 of the largest kinetic energy of
     // the fall (the dashpots take the energy out over a few ms per contact; the last 0.4 s
     // are a hundred times that). What stays is spin about contact normals, which no force of

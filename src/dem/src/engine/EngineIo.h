@@ -173,8 +173,7 @@ GrainOverlap EngineImpl<Exec>::largestOverlap()
         return out;
     if (needRebuild_ || grainsAtLastBuild_ != n)
     {
-        Exec::forEach(n, UnpackGrains{grains_.view()});
-        rebuild();
+        rebuild();           // between step() calls the SoA fields are the current state
         forcesStale_ = true; // the pair loads belong to the list before
     }
     overlapScratch_.resize(n);
