@@ -22,8 +22,8 @@ void totals(const dem::GrainData& g, Eigen::Vector3d& angular, Eigen::Vector3d& 
     linear.setZero();
     for (std::size_t i = 0; i < g.mass.size(); ++i)
     {
-        const CapsuleBody body = capsuleBody(g.radius[i], g.coreHalfLength[i],
-                                             g.mass[i] / g.volume[i]);
+        const CapsuleBody body =
+            capsuleBody(g.radius[i], g.coreHalfLength[i], g.mass[i] / g.volume[i]);
         const Eigen::Vector3d inertia(body.inertiaPerpendicular, body.inertiaPerpendicular,
                                       body.inertiaAxial);
         const Eigen::Matrix3d R = orientationOf(g, i).toRotationMatrix();
