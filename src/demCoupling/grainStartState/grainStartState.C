@@ -149,10 +149,15 @@ void Foam::grainStartState::checkOverlaps
     }
 
     const label n = grains_.size();
-    scalar rMax = 0;
-    for (const dem::GrainInit& g : grains_)
+    // A capsule is bounded by the sphere of radius r + h about its centre
+    const auto bounding = [&](const size_t i)
     {
-        rMax = max(rMax, g.radius);
+        return grains_[i].radius + grains_[i].coreHalfLength;
+    };
+    scalar rMax = 0;
+    for (size_t i = 0; i < grains_.size(); ++i)
+    {
+        rMax = max(rMax, bounding(i));
     }
 
     // Cells at least one largest diameter wide: overlapping grains lie in
@@ -203,7 +208,7 @@ void Foam::grainStartState::checkOverlaps
         order[fill[cellOfGrain[i]]++] = i;
     }
 
-    label worstI = -1, worstJ = -1, count = 0;
+    label worstI = -1, worstJ = -1, count = 0, capsulePairs = 0;
     scalar worst = 0;
     for (label i = 0; i < n; ++i)
     {
@@ -246,6 +251,14 @@ void Foam::grainStartState::checkOverlaps
                     }
                     distance2 += s*s;
                 }
+                if (bounding(i) > grains_[i].radius || bounding(j) > grains_[j].radius)
+                {
+                    // A capsule: its bounding spheres overlap, the capsules
+                    // themselves may not
+                    const scalar reach = bounding(i) + bounding(j);
+                    capsulePairs += distance2 < sqr(reach);
+                    continue;
+                }
                 const scalar rI = grains_[i].radius, rJ = grains_[j].radius;
                 const scalar overlap = rI + rJ - std::sqrt(distance2);
                 const scalar fraction = overlap/min(rI, rJ);
@@ -261,6 +274,14 @@ void Foam::grainStartState::checkOverlaps
                 }
             }
         }
+    }
+
+    if (capsulePairs)
+    {
+        WarningInFunction
+            << path_ << ": " << capsulePairs << " pair(s) with a capsule lie"
+            << " closer than their bounding spheres (radius r + h); their"
+            << " overlap is not checked here (spheres only)" << endl;
     }
 
     if (count)
