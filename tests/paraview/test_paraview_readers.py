@@ -375,3 +375,41 @@ def test_capsules_render_as_coloured_surfaces(capsule_case, x_display):
           f" distinct colours {colours}")
     assert covered > 0.02
     assert colours > 10
+
+
+def test_line_glyphs_draw_the_cores(capsule_case):
+    """The README's Glyph recipe for the cores, with VTK's glyph filter
+    (ParaView's Glyph is built on it): Glyph Type Line (from (-0.5, 0, 0)
+    to (0.5, 0, 0)), Orientation Array 'axis' (turns x onto it), Scale
+    Array 'coreHalfLength', Scale Factor 2: the two ends of each glyph are
+    the core's ends x -+ h axis, to the precision of the glyph's rotation
+    (VTK builds it from an angle, an arccosine near +-1 accurate to about
+    sqrt(eps) = 1.5e-8: twice that times the longest half-length)."""
+    _, path = grain_files(capsule_case.path)[-1]
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grains = reader.GetOutput()
+    grains.GetPointData().SetActiveScalars("coreHalfLength")
+    grains.GetPointData().SetActiveVectors("axis")
+    line = vtk.vtkLineSource()
+    line.SetPoint1(-0.5, 0, 0)
+    line.SetPoint2(0.5, 0, 0)
+    line.SetOutputPointsPrecision(vtk.vtkAlgorithm.DOUBLE_PRECISION)   # to check the geometry
+    glyphs = vtk.vtkGlyph3D()
+    glyphs.SetOutputPointsPrecision(vtk.vtkAlgorithm.DOUBLE_PRECISION)
+    glyphs.SetInputData(grains)
+    glyphs.SetSourceConnection(line.GetOutputPort())
+    glyphs.SetScaleModeToScaleByScalar()
+    glyphs.SetScaleFactor(2.0)
+    glyphs.SetVectorModeToUseVector()
+    glyphs.OrientOn()
+    glyphs.Update()
+    ends = vtk_to_numpy(glyphs.GetOutput().GetPoints().GetData()).astype(float).reshape(-1, 2, 3)
+    g = read_vtp(path)
+    a = g["axis"] * g["coreHalfLength"][:, None]
+    error = max(np.max(np.abs(ends[:, 0] - (g["position"] - a))),
+                np.max(np.abs(ends[:, 1] - (g["position"] + a))))
+    print(f"{len(ends)} line glyphs, largest end error {error:.1e} m")
+    assert len(ends) == CAPSULE_COUNT
+    assert error < 2 * np.sqrt(np.finfo(float).eps) * np.max(g["coreHalfLength"])
