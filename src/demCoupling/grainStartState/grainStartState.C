@@ -251,7 +251,11 @@ void Foam::grainStartState::checkOverlaps
                     }
                     distance2 += s*s;
                 }
-                if (bounding(i) > grains_[i].radius || bounding(j) > grains_[j].radius)
+                if
+                (
+                    bounding(i) > grains_[i].radius
+                 || bounding(j) > grains_[j].radius
+                )
                 {
                     // A capsule: its bounding spheres overlap, the capsules
                     // themselves may not

@@ -82,7 +82,7 @@ std::array<double, 3> rotate(const double* q, const std::array<double, 3>& v)
 }
 
 
-void write
+void writePolyData
 (
     const Foam::fileName& path,
     vtkPolyData* data,
@@ -177,7 +177,7 @@ void Foam::grainVtkWriter::writeVtp
     data->GetPointData()->AddArray(contacts);
     data->GetPointData()->AddArray(flags);
 
-    write(path, data, ascii);
+    writePolyData(path, data, ascii);
 }
 
 
@@ -241,7 +241,10 @@ void Foam::grainVtkWriter::writeSurfaceVtp
     vtkNew<vtkPoints> points;   // float: a picture, not data
     points->SetNumberOfPoints(n*m);
     vtkNew<vtkCellArray> cells;
-    cells->AllocateExact(n*polys->GetNumberOfCells(), n*polys->GetNumberOfConnectivityIds());
+    cells->AllocateExact
+    (
+        n*polys->GetNumberOfCells(), n*polys->GetNumberOfConnectivityIds()
+    );
     vtkNew<vtkIntArray> grain;
     grain->SetName("grain");
     grain->SetNumberOfTuples(n*m);
@@ -290,7 +293,7 @@ void Foam::grainVtkWriter::writeSurfaceVtp
     data->SetPolys(cells);
     data->GetPointData()->AddArray(grain);
     data->GetPointData()->AddArray(displacement);
-    write(path, data, ascii);
+    writePolyData(path, data, ascii);
 }
 
 

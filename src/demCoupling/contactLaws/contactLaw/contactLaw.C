@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactLaw.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -29,18 +30,19 @@ Foam::scalar Foam::contactLaw::getInRange
 
     if (!(value >= lower && value <= upper))
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' in " << dict.name();
+        OStringStream rule;
         if (upper < GREAT)
         {
-            FatalIOError
-                << " must lie in [" << lower << ", " << upper << "]";
+            rule<< "must lie in [" << lower << ", " << upper << "]";
         }
         else
         {
-            FatalIOError << " must be >= " << lower;
+            rule<< "must be >= " << lower;
         }
-        FatalIOError << ", found " << value << nl << exit(FatalIOError);
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name() << " "
+            << rule.str().c_str() << ", found " << value << nl
+            << exit(FatalIOError);
     }
 
     return value;

@@ -24,8 +24,10 @@ namespace contactLaws
 Foam::contactLaws::linearSpring::linearSpring(const dictionary& dict)
 {
     material_.law = dem::ContactLaw::linearSpring;
-    material_.normalStiffness = inputChecks::getPositive(dict, "normalStiffness");
-    material_.tangentialStiffness = getInRange(dict, "tangentialStiffness", 0, 0);
+    material_.normalStiffness =
+        inputChecks::getPositive(dict, "normalStiffness");
+    material_.tangentialStiffness =
+        getInRange(dict, "tangentialStiffness", 0, 0);
     material_.normalDamping = getInRange(dict, "normalDamping", 0, 0);
     material_.tangentialDamping = getInRange(dict, "tangentialDamping", 0, 0);
     material_.friction = getInRange(dict, "friction", 0, 0);
