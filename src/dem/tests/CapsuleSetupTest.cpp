@@ -91,4 +91,47 @@ TEST_P(CapsuleSetup, BadShapesAndOrientationsAreRefused)
     EXPECT_EQ(system.grainCount(), 1u); // the refused grains were not added
 }
 
+TEST_P(CapsuleSetup, LargestOverlapUsesTheCoresClosestPoints)
+{
+    dem::System system(parameters());
+    const double c = std::sqrt(0.5);
+    dem::GrainInit alongX, alongY, tipSphere, farSphere;
+    alongX.position = {0.5, 0.5, 0.5}; // core from x = 0.47 to 0.53
+    alongX.coreHalfLength = 0.03;
+    alongX.orientation = {c, 0.0, c, 0.0}; // body z -> global x
+    alongY.position = {0.52, 0.5, 0.519};  // crosses above: cores 0.019 m apart
+    alongY.coreHalfLength = 0.03;
+    alongY.orientation = {c, -c, 0.0, 0.0}; // body z -> global y
+    tipSphere.position = {0.542, 0.5, 0.5}; // 0.012 m beyond the tip at x = 0.53
+    tipSphere.radius = 0.005;
+    farSphere.position = {0.2, 0.2, 0.2};
+    system.addGrains({alongX, alongY, tipSphere, farSphere});
+    const dem::GrainOverlap deepest = system.largestOverlap();
+    std::printf("  deepest: grains %d and %d, overlap %.15e m, relative %.15f\n", deepest.first,
+                deepest.second, deepest.overlap, deepest.relativeOverlap);
+    // The tip sphere overlaps 0.015 - 0.012 = 3 mm (0.6 of its radius; its centre is 0.042 m
+    // from the capsule's, far outside the sum of radii); the crossing pair 1 mm (0.1).
+    // Round-off of coordinates near 0.5: 1e-15.
+    EXPECT_EQ(deepest.first, 0);
+    EXPECT_EQ(deepest.second, 2);
+    EXPECT_NEAR(deepest.overlap, 0.003, 1e-15);
+    EXPECT_NEAR(deepest.relativeOverlap, 0.6, 1e-13);
+    EXPECT_EQ(system.contactCount(), 2u);
+
+    // The query builds the neighbour list early; the run continues as without it.
+    dem::System unqueried(parameters());
+    unqueried.addGrains({alongX, alongY, tipSphere, farSphere});
+    system.step(50);
+    unqueried.step(50);
+    EXPECT_EQ(system.grains().position, unqueried.grains().position);
+    EXPECT_EQ(system.grains().orientation, unqueried.grains().orientation);
+
+    dem::System apart(parameters());
+    apart.addGrains({alongX, farSphere});
+    const dem::GrainOverlap none = apart.largestOverlap();
+    EXPECT_EQ(none.first, -1);
+    EXPECT_EQ(none.second, -1);
+    EXPECT_EQ(none.relativeOverlap, 0.0);
+}
+
 DEM_TEST_ON_ALL_BACKENDS(CapsuleSetup);
