@@ -9,6 +9,7 @@ about half capsules of aspect 1.5-3."""
 
 import filecmp
 import os
+import re
 import shutil
 import subprocess
 
@@ -129,3 +130,38 @@ def test_darcy_dem_foam_runs_capsules_and_spheres():
     free_fall = 0.5 * 9.81 * 0.02**2
     print(f"capsules' mean drop {drop:.3e} m, free fall {free_fall:.3e} m")
     assert drop > 0.5 * free_fall
+
+
+C = np.sqrt(0.5)   # cos 45 deg = sin 45 deg
+ALONG_X = f"{C!r} 0 {C!r} 0"    # q: 90 deg about y, the body z axis onto x
+ALONG_Y = f"{C!r} {-C!r} 0 0"   # q: -90 deg about x, onto y
+
+
+def two_capsules(name, second):
+    """Two capsules r = 8 mm, h = 10 mm: one along x at (0.05, 0.05, 0.2),
+    the other as given (line 3 and 4 of the file)."""
+    c = Case("grainColumn", name)
+    os.remove(c.file("constant/darcyProperties"))
+    os.remove(c.file("0/p"))
+    c.set("system/controlDict", "endTime", 1e-3)
+    with open(c.file("0/grains"), "w") as f:
+        f.write("# two capsules\n# x y z r h qw qx qy qz\n")
+        f.write(f"0.05 0.05 0.2 0.008 0.01 {ALONG_X}\n{second}\n")
+    c.run("blockMesh")
+    return c
+
+
+def test_start_overlap_of_capsules_is_measured_on_their_shapes():
+    """Crossing capsules, one 12 mm above the other: their cores cross at
+    12 mm, overlap 2r - 12 mm = 4 mm = 50 % of r: refused, naming both.
+    Side by side along x, 17 mm apart: apart (17 > 2r = 16 mm) though their
+    bounding spheres (r + h = 18 mm) overlap by 19 mm: accepted."""
+    c = two_capsules("capsule_start_crossing", f"0.05 0.05 0.212 0.008 0.01 {ALONG_Y}")
+    msg = fatal_message(c.run("demFoam", expect_fail=True))
+    assert "grain 0 (line 3)" in msg and "grain 1 (line 4)" in msg
+    found = float(re.search(r"overlap ([0-9.e+-]+) % of the smaller radius", msg).group(1))
+    print(f"crossing capsules: overlap reported {found} % of r, expected 50 %")
+    assert abs(found - 50) < 1e-6   # 10 digits of 4 mm / 8 mm, round-off of the geometry
+    c = two_capsules("capsule_start_side_by_side", f"0.05 0.067 0.2 0.008 0.01 {ALONG_X}")
+    log = c.run("demFoam")
+    assert "End" in log

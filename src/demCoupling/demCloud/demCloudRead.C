@@ -172,6 +172,7 @@ void Foam::demCloud::addGrainsFromFile()
         mesh_.time().timePath()/"grains", properties_, grid_.grid(), wallSpecs_
     );
     system_->addGrains(start.grains());
+    start.checkOverlaps(*system_);
     Info<< "    " << start.grains().size() << " grains from "
         << mesh_.time().timePath()/"grains" << endl;
     applyGrainFlags();
