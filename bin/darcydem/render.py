@@ -95,7 +95,7 @@ def render_surfaces(path, png, title="", size=(1000, 800), elevation=20, azimuth
     camera.SetPosition(*(centre + direction))
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCamera()
-    camera.Zoom(1.2)
+    camera.Zoom(1.05)
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.AddRenderer(renderer)
