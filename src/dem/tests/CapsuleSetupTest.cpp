@@ -4,6 +4,7 @@
 // are refused with a message naming the grain and the rule.
 #include "TestSupport.h"
 
+#include <algorithm>
 #include <functional>
 
 using namespace demTest;
@@ -132,6 +133,63 @@ TEST_P(CapsuleSetup, LargestOverlapUsesTheCoresClosestPoints)
     EXPECT_EQ(none.first, -1);
     EXPECT_EQ(none.second, -1);
     EXPECT_EQ(none.relativeOverlap, 0.0);
+}
+
+TEST_P(CapsuleSetup, CriticalTimeStepCountsCapsuleRotationAndSnowStiffness)
+{
+    // A capsule (r = 0.01 m, h = 0.02 m, rho 2600) under the linear spring k = 1e6 N/m: the
+    // smallest of m, I_perp / (r + h)^2 and I_axial / r^2 (closed forms) sets the step.
+    dem::System linear(parameters());
+    dem::GrainInit g;
+    g.position = {0.5, 0.5, 0.5};
+    g.coreHalfLength = 0.02;
+    linear.addGrain(g);
+    const double r = 0.01, L = 0.04, rho = 2600.0;
+    const double mc = rho * M_PI * r * r * L, mh = rho * 4.0 / 3.0 * M_PI * r * r * r;
+    const double perp =
+        mc * (L * L / 12 + r * r / 4) + mh * (2 * r * r / 5 + L * L / 4 + 3 * L * r / 8);
+    const double axial = mc * r * r / 2 + 2 * mh * r * r / 5;
+    const double effective = std::min({mc + mh, perp / (0.03 * 0.03), axial / (r * r)});
+    std::printf("  capsule: m %.6e kg, I_perp/(r+h)^2 %.6e kg, I_axial/r^2 %.6e kg; step %.6e s\n",
+                mc + mh, perp / (0.03 * 0.03), axial / (r * r), linear.criticalTimeStep());
+    EXPECT_NEAR(linear.criticalTimeStep(), std::sqrt(effective / 1e6),
+                1e-14 * std::sqrt(effective / 1e6));
+
+    // The snow law (E = 1e7 Pa) on spheres of r = 0.01 and 0.02 m: k_n = E pi R_max / 2 at
+    // the largest radius (k_t = 0.6 k_n is smaller), m the smaller sphere's.
+    dem::Parameters p = parameters();
+    p.grainGrain.law = dem::ContactLaw::snow;
+    p.grainGrain.youngsModulus = 1e7;
+    p.grainWall = p.grainGrain;
+    dem::System snow(p);
+    dem::GrainInit small, large;
+    small.position = {0.2, 0.2, 0.2};
+    large.position = {0.6, 0.6, 0.6};
+    large.radius = 0.02;
+    snow.addGrains({small, large});
+    const double kn = 0.5 * M_PI * 1e7 * 0.02, m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+    EXPECT_NEAR(snow.criticalTimeStep(), std::sqrt(m / kn), 1e-14 * std::sqrt(m / kn));
+}
+
+TEST_P(CapsuleSetup, SnowLawConstantsAreChecked)
+{
+    dem::Parameters p = parameters();
+    p.grainWall.law = dem::ContactLaw::snow;
+    p.grainWall.youngsModulus = 0.0;
+    std::string message = refusal([&] { dem::System s(p); });
+    std::printf("  %s\n", message.c_str());
+    EXPECT_NE(message.find("grainWall.youngsModulus"), std::string::npos) << message;
+    p.grainWall.youngsModulus = 1e7;
+    p.grainWall.normalDampingRatio = 1.5;
+    message = refusal([&] { dem::System s(p); });
+    std::printf("  %s\n", message.c_str());
+    EXPECT_NE(message.find("grainWall.normalDampingRatio"), std::string::npos) << message;
+    p.grainWall.normalDampingRatio = 0.2;
+    p.grainWall.tangentialToNormalStiffness = -0.1;
+    EXPECT_NE(refusal([&] { dem::System s(p); }).find("tangentialToNormalStiffness"),
+              std::string::npos);
+    p.grainWall.tangentialToNormalStiffness = 0.6;
+    EXPECT_EQ(refusal([&] { dem::System s(p); }), "");
 }
 
 DEM_TEST_ON_ALL_BACKENDS(CapsuleSetup);

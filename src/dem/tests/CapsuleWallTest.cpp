@@ -99,6 +99,29 @@ TEST_P(CapsuleWall, HorizontalCapsuleRestsOnBothEnds)
     EXPECT_LT(std::fabs(axisZ), 1e-9);
 }
 
+TEST_P(CapsuleWall, HorizontalCapsuleRestsOnBothEndsUnderTheSnowLaw)
+{
+    // The snow law at the wall: k_n = E pi r / 2 per end (a wall's mean radius is the
+    // grain's), E chosen for k_n = 1e6 N/m; dashpot 0.7 of critical for the capsule's mass.
+    dem::Parameters p = restingParameters();
+    p.grainWall.law = dem::ContactLaw::snow;
+    const double kn = 1e6, r = 0.01;
+    p.grainWall.youngsModulus = 2.0 * kn / (M_PI * r);
+    p.grainWall.normalDampingRatio = 0.7;
+    dem::System system(p);
+    system.addGrain(capsule(0.01, true));
+    system.addWall(dem::WallSpec());
+    system.step(20000);
+    const dem::GrainData g = system.grains();
+    const double weight = g.mass[0] * 9.81, expected = r - weight / (2.0 * kn);
+    std::printf("  snow law: wall force %.12f N, weight %.12f N; height %.12e m, expected "
+                "%.12e m\n",
+                -system.wall(0).grainForce, weight, g.position[2], expected);
+    EXPECT_NEAR(-system.wall(0).grainForce, weight, 1e-9 * weight);
+    // k_n from E to round-off: 1e-15 of the 2e-7 m sinking, far below the 1e-12 m asked.
+    EXPECT_NEAR(g.position[2], expected, 1e-12);
+}
+
 TEST_P(CapsuleWall, VerticalCapsuleRestsOnItsLowerEnd)
 {
     dem::System system(restingParameters());
@@ -126,7 +149,7 @@ TEST_P(CapsuleWall, MixedPackingSettlesAboveTheWall)
     p.gravity = {0.0, 0.0, -9.81};
     p.boxUpper = {0.068, 0.068};
     p.timeStep = 2e-5;
-    p.neighbourSkin = 0.0005;
+    p.neighbourSkin = 0.002; // few rebuilds while the grains fall
     p.viscousDrag = 0.003;
     dem::System system(p);
     std::mt19937 random(7);

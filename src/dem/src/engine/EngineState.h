@@ -93,10 +93,26 @@ void EngineImpl<Exec>::importState(const SystemState& s)
                     std::to_string(kHistoryLayout) + ")");
     const int n = int(counters[5]);
     grains_.resizeForImport(n);
+    // A state written before grains had shapes (spheres only) lacks the shape fields: they
+    // are what those spheres had (no core, I from 1/I, no capsule state), not an error.
+    std::map<std::string, std::vector<double>> spheres;
+    if (s.reals.find("grain.coreHalfLength") == s.reals.end())
+    {
+        const std::vector<double>& inverseInertia = entry(s.reals, "grain.inverseInertia");
+        std::vector<double>& inertia = spheres["grain.principalInertia"];
+        for (int c = 0; c < 3; ++c)
+            for (double inverse : inverseInertia)
+                inertia.push_back(1.0 / inverse);
+        for (const int f : {fCoreHalfLength, fAngularMomentum, fWallStateEnd, fHalfAxisAtBuild})
+            spheres[std::string("grain.") + realFieldInfo(f).name].assign(
+                std::size_t(realFieldInfo(f).components) * n, 0.0);
+    }
     for (int f = 0; f < kRealFieldCount; ++f)
     {
         const std::string name = std::string("grain.") + realFieldInfo(f).name;
-        const std::vector<double>& v = entry(s.reals, name);
+        const auto sphereDefault = spheres.find(name);
+        const std::vector<double>& v =
+            sphereDefault != spheres.end() ? sphereDefault->second : entry(s.reals, name);
         if (v.size() != std::size_t(realFieldInfo(f).components) * n)
             throw Error("importState: '" + name + "' has " + std::to_string(v.size()) +
                         " values for " + std::to_string(n) + " grains");

@@ -196,7 +196,7 @@ struct GrainForceKernel
             h[0] = history.x();
             h[1] = history.y();
             h[2] = history.z();
-            h[3] = -loads.forceOnI[walls.axis[w]];
+            h[3] = -WallsView::component(loads.forceOnI, walls.axis[w]);
             force += loads.forceOnI;
             torque += loads.torqueOnI;
         }
@@ -216,7 +216,7 @@ struct GrainForceKernel
         {
             const Vector3d m = -walls.towardsWall(w);
             const CapsulePlaneGeometry plane =
-                capsulePlaneGeometry(x, a, r, walls.position[w] * m.cwiseAbs(), m);
+                capsulePlaneGeometry(x, a, r, walls.alongAxis(w, walls.position[w]), m);
             for (int e = 0; e < 2; ++e)
             {
                 const int bit = 1 << (w + e * kMaxWalls);
@@ -237,7 +237,7 @@ struct GrainForceKernel
                 h[0] = history.x();
                 h[1] = history.y();
                 h[2] = history.z();
-                h[3] = -loads.forceOnI[walls.axis[w]];
+                h[3] = -WallsView::component(loads.forceOnI, walls.axis[w]);
                 force += loads.forceOnI;
                 torque += loads.torqueOnI;
             }

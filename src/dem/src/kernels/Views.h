@@ -231,24 +231,26 @@ struct WallsView
     double velocity[kMaxWalls] = {};
     bool frictional[kMaxWalls] = {};
 
+    //- Component `axis` of x, by selects (an index into a vector held in registers would
+    //- send it through memory in the per-grain pass).
+    DEM_HD static double component(const Vector3d& x, int axis)
+    {
+        return axis == 0 ? x.x() : (axis == 1 ? x.y() : x.z());
+    }
+    //- value along the axis of wall w, zero elsewhere.
+    DEM_HD Vector3d alongAxis(int w, double value) const
+    {
+        return Vector3d(axis[w] == 0 ? value : 0.0, axis[w] == 1 ? value : 0.0,
+                        axis[w] == 2 ? value : 0.0);
+    }
     //- Signed distance of point x from wall w (positive on the grains' side).
     DEM_HD double distance(int w, const Vector3d& x) const
     {
-        return (x[axis[w]] - position[w]) * normalSign[w];
+        return (component(x, axis[w]) - position[w]) * normalSign[w];
     }
     //- Unit vector from a grain towards wall w.
-    DEM_HD Vector3d towardsWall(int w) const
-    {
-        Vector3d t = Vector3d::Zero();
-        t[axis[w]] = -normalSign[w];
-        return t;
-    }
-    DEM_HD Vector3d wallVelocity(int w) const
-    {
-        Vector3d u = Vector3d::Zero();
-        u[axis[w]] = velocity[w];
-        return u;
-    }
+    DEM_HD Vector3d towardsWall(int w) const { return alongAxis(w, -normalSign[w]); }
+    DEM_HD Vector3d wallVelocity(int w) const { return alongAxis(w, velocity[w]); }
 };
 
 } // namespace DEM_KERNEL_NS
