@@ -129,6 +129,7 @@ GrainData EngineImpl<Exec>::grains() const
         Exec::forEach(
             n, FluidForceOnGrains{e.grains_.vec3(fPosition),
                                   e.grains_.real(fRadius),
+                                  nullptr,
                                   fluid,
                                   {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
                                   Vec3Array{thrust::raw_pointer_cast(fluidForce.data()), n}});
@@ -234,7 +235,7 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
             thrust::fill(exec_.policy(), momentum.begin(), momentum.end(), 0.0);
         Exec::forEachScatter(
             n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
-                             e.grains_.real(fRadius), g, lookAhead,
+                             e.grains_.real(fRadius), nullptr, nullptr, g, lookAhead,
                              thrust::raw_pointer_cast(solid.data()),
                              withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr});
         Exec::forEach(
