@@ -20,6 +20,7 @@ namespace dem
 namespace detail
 {
 
+using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
 //- Add into memory that several threads may hit at once (deposit on CUDA).

@@ -203,8 +203,9 @@ private:
         v.count = int(walls_.size());
         for (int w = 0; w < v.count; ++w)
         {
+            v.axis[w] = 2; // z planes (WallSpec has no other axis yet)
             v.position[w] = walls_[w].position;
-            v.normalZ[w] = walls_[w].spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
+            v.normalSign[w] = walls_[w].spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
             v.velocity[w] = walls_[w].velocity;
             v.frictional[w] = walls_[w].spec.frictional;
         }
@@ -258,6 +259,11 @@ private:
         computeForces(0.0);
         exec_.maxOf(n, gatherKick(0.0, 0.0, false));
         forcesStale_ = false;
+    }
+
+    int reactionComponents() const
+    {
+        return grains_.hasCapsules() ? kCapsuleReactionComponents : kSphereReactionComponents;
     }
 
     CellGridView cellGrid(); //!< also throwLeftTheNumbers if grains are absurdly far apart

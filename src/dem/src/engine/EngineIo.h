@@ -13,9 +13,67 @@ namespace dem
 namespace detail
 {
 
+namespace shapeDetail
+{
+//- Mass and principal moments (I_perp, I_perp, I_axial) of a sphere or capsule.
+struct ShapeMass
+{
+    double mass;
+    double inertia[3];
+};
+
+//- True solid volume: 4/3 pi r^3 + pi r^2 2h (the sphere's as the deposit computes it).
+inline double shapeVolume(double r, double h)
+{
+    return 4.18879020478639098 * r * r * r + M_PI * r * r * (2.0 * h);
+}
+
+inline ShapeMass shapeMass(double r, double h, double density)
+{
+    ShapeMass s;
+    if (h == 0.0) // a sphere: today's arithmetic, bit for bit
+    {
+        s.mass = density * 4.18879020478639098 * r * r * r;
+        s.inertia[0] = s.inertia[1] = s.inertia[2] = 0.4 * s.mass * r * r;
+        return s;
+    }
+    const double L = 2.0 * h;
+    const double cylinder = density * M_PI * r * r * L;
+    const double caps = density * 4.18879020478639098 * r * r * r;
+    s.mass = cylinder + caps;
+    s.inertia[2] = cylinder * r * r / 2.0 + 2.0 * caps * r * r / 5.0;
+    s.inertia[0] = s.inertia[1] = cylinder * (L * L / 12.0 + r * r / 4.0) +
+                                  caps * (2.0 * r * r / 5.0 + L * L / 4.0 + 3.0 * L * r / 8.0);
+    return s;
+}
+
+//- The unit quaternion of orientation (w, x, y, z), normalised; refused when not finite or
+//- further than 1e-6 from unit length (a typo, not round-off).
+inline Quaterniond checkedOrientation(const std::array<double, 4>& q, const std::string& name)
+{
+    const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (!std::isfinite(norm) || !(std::fabs(norm - 1.0) <= 1e-6))
+        throw Error(name + " has orientation (" + std::to_string(q[0]) + ", " +
+                    std::to_string(q[1]) + ", " + std::to_string(q[2]) + ", " +
+                    std::to_string(q[3]) + ") of length " + std::to_string(norm) +
+                    "; it must be a unit quaternion (w, x, y, z), | |q| - 1 | <= 1e-6");
+    if (norm == 1.0)
+        return Quaterniond(q[0], q[1], q[2], q[3]);
+    return Quaterniond(q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm);
+}
+
+//- L = R I R^T omega (I the principal moments, body frame).
+inline Vector3d angularMomentum(const Quaterniond& q, const Vector3d& inertia,
+                                const Vector3d& omega)
+{
+    return q * inertia.cwiseProduct(q.conjugate() * omega);
+}
+} // namespace shapeDetail
+
 template <class Exec>
 void EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
 {
+    using namespace shapeDetail;
     const int k = int(grains.size()), first = grains_.size();
     std::array<std::vector<double>, kRealFieldCount> reals;
     std::array<std::vector<int>, kIntFieldCount> ints;
@@ -26,27 +84,43 @@ void EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
     for (int i = 0; i < k; ++i)
     {
         const GrainInit& g = grains[i];
+        const std::string name = "addGrains: grain " + std::to_string(first + i);
         if (!(g.radius > 0.0) || !std::isfinite(g.radius))
-            throw Error("addGrains: grain " + std::to_string(first + i) + " has radius " +
-                        std::to_string(g.radius) + "; it must be > 0");
+            throw Error(name + " has radius " + std::to_string(g.radius) + "; it must be > 0");
+        if (!(g.coreHalfLength >= 0.0) || !std::isfinite(g.coreHalfLength))
+            throw Error(name + " has coreHalfLength " + std::to_string(g.coreHalfLength) +
+                        "; it must be >= 0 and finite (0: a sphere)");
+        const Quaterniond q = checkedOrientation(g.orientation, name);
         const double density = g.density > 0.0 ? g.density : params_.defaultDensity;
-        const double mass = density * 4.18879020478639098 * g.radius * g.radius * g.radius;
+        const ShapeMass shape = shapeMass(g.radius, g.coreHalfLength, density);
         for (int d = 0; d < 3; ++d)
         {
             if (!std::isfinite(g.position[d]))
-                throw Error("addGrains: grain " + std::to_string(first + i) +
-                            " has a non-finite position");
+                throw Error(name + " has a non-finite position");
             reals[fPosition][d * k + i] = g.position[d];
             reals[fOrigin][d * k + i] = g.position[d];
             reals[fVelocity][d * k + i] = g.velocity[d];
             reals[fAngularVelocity][d * k + i] = g.angularVelocity[d];
+            reals[fPrincipalInertia][d * k + i] = shape.inertia[d];
         }
         reals[fPrescribedVelocity][i] = g.velocity[0];
         reals[fPrescribedVelocity][k + i] = g.velocity[1];
-        reals[fOrientation][i] = 1.0;
+        reals[fOrientation][i] = q.w();
+        reals[fOrientation][k + i] = q.x();
+        reals[fOrientation][2 * k + i] = q.y();
+        reals[fOrientation][3 * k + i] = q.z();
         reals[fRadius][i] = g.radius;
-        reals[fInverseMass][i] = 1.0 / mass;
-        reals[fInverseInertia][i] = 1.0 / (0.4 * mass * g.radius * g.radius);
+        reals[fCoreHalfLength][i] = g.coreHalfLength;
+        reals[fInverseMass][i] = 1.0 / shape.mass;
+        reals[fInverseInertia][i] = 1.0 / shape.inertia[0];
+        if (g.coreHalfLength > 0.0) // the integrated rotational state: L = R I R^T omega
+        {
+            const Vector3d omega(g.angularVelocity[0], g.angularVelocity[1], g.angularVelocity[2]);
+            const Vector3d L = angularMomentum(
+                q, Vector3d(shape.inertia[0], shape.inertia[1], shape.inertia[2]), omega);
+            for (int d = 0; d < 3; ++d)
+                reals[fAngularMomentum][d * k + i] = L[d];
+        }
         ints[fFlag][i] = int(g.flag);
         ints[fId][i] = first + i;
     }
@@ -141,8 +215,13 @@ GrainData EngineImpl<Exec>::grains() const
     vector3(fOrigin, origin);
     out.displacement.resize(3 * std::size_t(n));
     const std::vector<double> radius = grains_.hostReal(fRadius),
-                              inverseMass = grains_.hostReal(fInverseMass);
+                              inverseMass = grains_.hostReal(fInverseMass),
+                              halfLength = grains_.hostReal(fCoreHalfLength),
+                              orientation = grains_.hostReal(fOrientation);
     out.radius.resize(n);
+    out.coreHalfLength.resize(n);
+    out.orientation.resize(4 * std::size_t(n));
+    out.volume.resize(n);
     out.mass.resize(n);
     out.contactCount.resize(n);
     out.flag.resize(n);
@@ -150,6 +229,10 @@ GrainData EngineImpl<Exec>::grains() const
     {
         const int u = id[i];
         out.radius[u] = radius[i];
+        out.coreHalfLength[u] = halfLength[i];
+        for (int c = 0; c < 4; ++c)
+            out.orientation[4 * std::size_t(u) + c] = orientation[std::size_t(c) * n + i];
+        out.volume[u] = shapeDetail::shapeVolume(radius[i], halfLength[i]);
         out.mass[u] = 1.0 / inverseMass[i];
         out.contactCount[u] = contacts[i];
         out.flag[u] = GrainFlag(flag[i]);

@@ -31,12 +31,16 @@ enum RealField
     fPositionAtBuild,
     fOrigin, //!< unwrapped position when added (displacement read-back)
     fPrescribedVelocity,
-    fOrientation, //!< unit quaternion (w, x, y, z); carried for non-spherical grains
+    fOrientation, //!< unit quaternion (w, x, y, z), body to global; integrated for capsules
     fRadius,
     fInverseMass,
     fInverseInertia,
-    fWallState, //!< interleaved, see GrainView::wallState
-    fImpulseX,  //!< time integral of the x-force on a prescribed-velocity grain (else 0)
+    fWallState,        //!< interleaved, see GrainView::wallState
+    fImpulseX,         //!< time integral of the x-force on a prescribed-velocity grain (else 0)
+    fCoreHalfLength,   //!< half the core segment's length (0: a sphere)
+    fPrincipalInertia, //!< (I_perp, I_perp, I_axial), body frame
+    fAngularMomentum,  //!< global angular momentum (integrated for capsules; 0 for spheres)
+    fWallStateEnd,     //!< interleaved, a capsule's second end (GrainView::wallStateEnd)
     kRealFieldCount
 };
 
@@ -71,7 +75,11 @@ inline const FieldInfo& realFieldInfo(int f)
                                                      {"inverseMass", 1},
                                                      {"inverseInertia", 1},
                                                      {"wallState", kWallStateComponents, true},
-                                                     {"impulseX", 1}};
+                                                     {"impulseX", 1},
+                                                     {"coreHalfLength", 1},
+                                                     {"principalInertia", 3},
+                                                     {"angularMomentum", 3},
+                                                     {"wallStateEnd", kWallStateComponents, true}};
     return table[f];
 }
 
@@ -109,6 +117,9 @@ public:
     using Vec = typename Exec::template Vector<T>;
 
     int size() const { return n_; }
+    //- Any grain with a core segment (coreHalfLength > 0): the pair and step kernels take the
+    //- capsule forms (CapsuleShapes), and the packed half-axis vectors exist.
+    bool hasCapsules() const { return capsules_; }
 
     double* real(int f) { return thrust::raw_pointer_cast(reals_[f].data()); }
     int* integer(int f) { return thrust::raw_pointer_cast(ints_[f].data()); }
@@ -129,6 +140,11 @@ public:
         g.inverseMass = real(fInverseMass);
         g.inverseInertia = real(fInverseInertia);
         g.wallState = real(fWallState);
+        g.wallStateEnd = real(fWallStateEnd);
+        g.coreHalfLength = real(fCoreHalfLength);
+        g.orientation = real(fOrientation);
+        g.principalInertia = vec3(fPrincipalInertia);
+        g.angularMomentum = vec3(fAngularMomentum);
         g.impulseX = real(fImpulseX);
         g.flag = integer(fFlag);
         g.wallContacts = integer(fWallContacts);
@@ -141,13 +157,28 @@ public:
         g.packedPositionRadius = thrust::raw_pointer_cast(packedPositionRadius_.data());
         g.packedVelocities = thrust::raw_pointer_cast(packedVelocities_.data());
         g.packedPositionAtBuild = thrust::raw_pointer_cast(packedPositionAtBuild_.data());
+        if (capsules_)
+        {
+            if (packedHalfAxis_.size() != 4 * std::size_t(n_))
+            {
+                packedHalfAxis_.resize(4 * std::size_t(n_));
+                packedHalfAxisAtBuild_.resize(4 * std::size_t(n_));
+            }
+            g.packedHalfAxis = thrust::raw_pointer_cast(packedHalfAxis_.data());
+            g.packedHalfAxisAtBuild = thrust::raw_pointer_cast(packedHalfAxisAtBuild_.data());
+        }
         return g;
     }
 
     //- Host copies, component-blocked.
     std::vector<double> hostReal(int f) const { return toHost(reals_[f]); }
     std::vector<int> hostInt(int f) const { return toHost(ints_[f]); }
-    void setReal(int f, const std::vector<double>& v) { fromHost(reals_[f], v); }
+    void setReal(int f, const std::vector<double>& v)
+    {
+        fromHost(reals_[f], v);
+        if (f == fCoreHalfLength)
+            capsules_ = anyPositive(v);
+    }
     void setInt(int f, const std::vector<int>& v) { fromHost(ints_[f], v); }
 
     //- Append grains given component-blocked host arrays of `added` grains per field.
@@ -160,6 +191,7 @@ public:
         for (int f = 0; f < kIntFieldCount; ++f)
             fromHost(ints_[f], merge(hostInt(f), ints[f], intFieldInfo(f), m));
         n_ = m;
+        capsules_ = capsules_ || anyPositive(reals[fCoreHalfLength]);
     }
 
     //- Reorder every field: new grain i = old grain order[i] (policy: the engine's Thrust
@@ -175,6 +207,13 @@ public:
     void resizeForImport(int n) { n_ = n; }
 
 private:
+    static bool anyPositive(const std::vector<double>& v)
+    {
+        for (double x : v)
+            if (x > 0.0)
+                return true;
+        return false;
+    }
     template <class T>
     static std::vector<T> toHost(const Vec<T>& v)
     {
@@ -238,6 +277,8 @@ private:
     std::array<Vec<int>, kIntFieldCount> ints_;
     Vec<double> scratchReal_;
     Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_;
+    Vec<double> packedHalfAxis_, packedHalfAxisAtBuild_;
+    bool capsules_ = false;
     Vec<int> scratchInt_;
 };
 

@@ -7,6 +7,8 @@
 
 #include "kernels/Views.h"
 
+#include <utility>
+
 namespace dem
 {
 namespace detail
@@ -20,6 +22,9 @@ struct PairStorage
 
     Vec<int> start = Vec<int>(1, 0), owner, partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
+    //- Loads per pair: kSphereReactionComponents, or kCapsuleReactionComponents in a system
+    //- with capsules (set by the engine before the list is filled).
+    int reactionComponents = kSphereReactionComponents;
 
     long count() const { return long(partner.size()); }
 
@@ -31,7 +36,7 @@ struct PairStorage
         PairView v;
         v.count = count();
         v.componentStride = Exec::kPairMajor ? 1 : v.count;
-        v.reactionPairStride = Exec::kPairMajor ? kReactionComponents : 1;
+        v.reactionPairStride = Exec::kPairMajor ? reactionComponents : 1;
         v.start = thrust::raw_pointer_cast(start.data());
         v.owner = thrust::raw_pointer_cast(owner.data());
         v.partner = thrust::raw_pointer_cast(partner.data());
@@ -51,6 +56,7 @@ struct PairStorage
         incomingPair.swap(other.incomingPair);
         history.swap(other.history);
         reaction.swap(other.reaction);
+        std::swap(reactionComponents, other.reactionComponents);
     }
 };
 

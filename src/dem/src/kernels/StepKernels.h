@@ -86,10 +86,10 @@ struct GrainForceKernel
     {
         if (i >= g.n)
             return;
-        const double z = g.packedPositionRadius[4L * i + 2];
-        const double reach = 1.1 * g.packedPositionRadius[4L * i + 3]; // near contact
+        const double* xr = g.packedPositionRadius + 4L * i;
+        const double reach = 1.1 * xr[3]; // near contact
         for (int w = 0; w < walls.count; ++w)
-            if ((z - walls.position[w]) * walls.normalZ[w] < reach)
+            if ((xr[walls.axis[w]] - walls.position[w]) * walls.normalSign[w] < reach)
                 prefetch(wallRecordOf(g.wallState, i, w));
     }
     static constexpr int kWallPrefetchDistance = 24; //!< grains ahead of the one summed
@@ -102,7 +102,7 @@ struct GrainForceKernel
         for (int w = 0; w < walls.count; ++w)
         {
             double* h = wallRecordOf(g.wallState, i, w);
-            const double overlap = r - (x.z() - walls.position[w]) * walls.normalZ[w];
+            const double overlap = r - walls.distance(w, x);
             if (overlap <= 0.0)
             {
                 if (wasTouching & (1 << w))
@@ -111,14 +111,14 @@ struct GrainForceKernel
             }
             touching |= 1 << w;
             Vector3d history(h[0], h[1], h[2]);
-            const Vector3d normal(0.0, 0.0, -walls.normalZ[w]); // from the grain to the wall
+            const Vector3d normal = walls.towardsWall(w);
             const ContactLoads loads = evaluateContact(
                 walls.frictional[w] ? wallLaw : frictionlessWallLaw, normal, overlap, r, 0.0, v,
-                Vector3d(0.0, 0.0, walls.velocity[w]), omega, Vector3d::Zero(), history);
+                walls.wallVelocity(w), omega, Vector3d::Zero(), history);
             h[0] = history.x();
             h[1] = history.y();
             h[2] = history.z();
-            h[3] = -loads.forceOnI.z();
+            h[3] = -loads.forceOnI[walls.axis[w]];
             force += loads.forceOnI;
             torque += loads.torqueOnI;
         }
@@ -174,6 +174,7 @@ struct PairForceKernel
         const double overlap = sumRadii - distance;
 
         const long cs = pairs.stride();
+        constexpr int kReactionComponents = kSphereReactionComponents;
         const long r0 = p * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* h = pairs.history;
         double* out = pairs.reaction;
@@ -226,7 +227,7 @@ struct GatherKick
         {
             const bool own = k < owned;
             const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
-            const double* loads = pairs.reactionOf(p);
+            const double* loads = pairs.reactionOf<kSphereReactionComponents>(p);
             const double sign = own ? 1.0 : -1.0;
             const double lever = loads[(own ? 6 : 7) * cs];
             force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);

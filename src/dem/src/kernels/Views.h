@@ -14,11 +14,13 @@ inline namespace DEM_KERNEL_NS
 
 //- Maximum number of walls (their contact history is stored per grain).
 constexpr int kMaxWalls = 4;
-//- Per grain and wall: tangential history (x, y, z), then the grain's z-force on the wall.
+//- Per grain, wall and contact: tangential history (x, y, z), then the grain's force on the
+//- wall along the wall's axis. A sphere touches a plane once; a capsule at both ends of its
+//- core segment, the second end's records in a second array (GrainView::wallStateEnd).
 constexpr int kWallRecord = 4;
 constexpr int kWallStateComponents = kWallRecord * kMaxWalls;
 
-//- Grain i's record for wall w in a wallState array (GrainView::wallState).
+//- Grain i's record for wall w in a wallState array (GrainView::wallState or wallStateEnd).
 DEM_HD double* wallRecordOf(double* wallState, long i, int w)
 {
     return wallState + i * kWallStateComponents + kWallRecord * w;
@@ -26,10 +28,15 @@ DEM_HD double* wallRecordOf(double* wallState, long i, int w)
 //- Vectors of history per contact (1: tangential spring; bonds will add more).
 constexpr int kHistoryVectors = 1;
 
-//- Per-pair loads of the last force evaluation (zero when open): force on the owner (3),
-//- n x tangential force (3), the owner's and the partner's lever arm. The owner's torque is
-//- lever_owner (n x f), the partner's lever_partner (n x f), its force minus the owner's.
-constexpr int kReactionComponents = 8;
+//- Per-pair loads of the last force evaluation (zero when open), two records:
+//- spheres only (SphereShapes): force on the owner (3), n x tangential force (3), the owner's
+//- and the partner's lever arm. The owner's torque is lever_owner (n x f), the partner's
+//- lever_partner (n x f), its force minus the owner's. For spheres the contact point lies on
+//- the line of centres, so lever (n x f) is the whole torque.
+//- with capsules (CapsuleShapes): force on the owner (3), torque on the owner (3), torque on
+//- the partner (3), each (contact point - centre) x force.
+constexpr int kSphereReactionComponents = 8;
+constexpr int kCapsuleReactionComponents = 9;
 
 //- Three components with a stride (a component-blocked vector field).
 struct Vec3Array
@@ -57,11 +64,19 @@ struct GrainView
     double* prescribedVelocity = nullptr; //!< 2 components (x, y)
     double* radius = nullptr;
     double* inverseMass = nullptr;
-    double* inverseInertia = nullptr;
+    double* inverseInertia = nullptr; //!< spheres: 1 / (2/5 m r^2)
+    //- Shape (capsules): half the core segment's length (0: a sphere), the body-to-global
+    //- unit quaternion (w, x, y, z; 4 blocked components), principal moments of inertia
+    //- (I_perp, I_perp, I_axial) in the body frame, and the global angular momentum, the
+    //- integrated rotational state of a non-spherical grain (omega follows from it).
+    double* coreHalfLength = nullptr;
+    double* orientation = nullptr;
+    Vec3Array principalInertia, angularMomentum;
     //- Per grain kMaxWalls records of kWallRecord (wallRecordOf). Together per grain, not one
     //- array per component: the grains touching a wall are scattered through the cell-sorted
     //- order, and this way each costs one cache line.
     double* wallState = nullptr;
+    double* wallStateEnd = nullptr; //!< the same for a capsule's second segment end (u = +1)
     int* flag = nullptr;
     int* wallContacts = nullptr; //!< bit w: touching wall w (history and force to clear)
     double* impulseX = nullptr;  //!< integral of F_x dt on prescribed-velocity grains
@@ -71,6 +86,40 @@ struct GrainView
     double* packedPositionRadius = nullptr;
     double* packedVelocities = nullptr;
     double* packedPositionAtBuild = nullptr;
+    //- Systems with capsules only (else nullptr): the half-axis vector a = h R(q) e_z (ax, ay,
+    //- az, 0), now and at the last rebuild (the skin check counts the ends' motion).
+    double* packedHalfAxis = nullptr;
+    double* packedHalfAxisAtBuild = nullptr;
+
+    DEM_HD Quaterniond orientationOf(long i) const
+    {
+        return Quaterniond(orientation[i], orientation[i + n], orientation[i + 2L * n],
+                           orientation[i + 3L * n]);
+    }
+    DEM_HD void storeOrientation(long i, const Quaterniond& q) const
+    {
+        orientation[i] = q.w();
+        orientation[i + n] = q.x();
+        orientation[i + 2L * n] = q.y();
+        orientation[i + 3L * n] = q.z();
+    }
+    //- a = h R(q) e_z from the SoA fields (0 for a sphere).
+    DEM_HD Vector3d halfAxis(long i) const
+    {
+        return coreHalfLength[i] * (orientationOf(i) * Vector3d::UnitZ());
+    }
+    DEM_HD Vector3d packedHalfAxisOf(long i) const
+    {
+        const double* a = packedHalfAxis + 4L * i;
+        return Vector3d(a[0], a[1], a[2]);
+    }
+    DEM_HD void packHalfAxis(long i) const
+    {
+        const Vector3d a = halfAxis(i);
+        for (int c = 0; c < 3; ++c)
+            packedHalfAxis[4L * i + c] = a[c];
+        packedHalfAxis[4L * i + 3] = 0.0;
+    }
 
     DEM_HD void pack(int i) const
     {
@@ -126,7 +175,7 @@ struct PairView
     const int* owner = nullptr;         //!< the lower grain of each pair
     const int* partner = nullptr;       //!< the other grain, > owner
     double* history = nullptr;          //!< 3 * kHistoryVectors components, c at c * count + p
-    double* reaction = nullptr;         //!< kReactionComponents (see PairLoads)
+    double* reaction = nullptr;         //!< k{Sphere,Capsule}ReactionComponents per pair
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
 
@@ -135,9 +184,11 @@ struct PairView
     //- Distance between two components of one pair's history.
     DEM_HD long historyStride() const { return count; }
     DEM_HD double* historyOf(long p) const { return history + p; }
+    //- Pair p's loads, C components per pair (the shapes' record).
+    template <int C>
     DEM_HD double* reactionOf(long p) const
     {
-        return reaction + p * (kPairMajorLayout ? kReactionComponents : reactionPairStride);
+        return reaction + p * (kPairMajorLayout ? C : reactionPairStride);
     }
 };
 
@@ -166,14 +217,36 @@ struct BoxView
     }
 };
 
-//- Walls z = position with normal +z (lower) or -z (upper).
+//- Axis-aligned walls: the plane x[axis] = position with unit normal normalSign e_axis
+//- pointing into the grains (lower z wall: axis 2, +1; upper: -1). Today's walls are z planes;
+//- the geometry is written for any axis. A wall moves along its normal.
 struct WallsView
 {
     int count = 0;
+    int axis[kMaxWalls] = {};
     double position[kMaxWalls] = {};
-    double normalZ[kMaxWalls] = {};
+    double normalSign[kMaxWalls] = {};
     double velocity[kMaxWalls] = {};
     bool frictional[kMaxWalls] = {};
+
+    //- Signed distance of point x from wall w (positive on the grains' side).
+    DEM_HD double distance(int w, const Vector3d& x) const
+    {
+        return (x[axis[w]] - position[w]) * normalSign[w];
+    }
+    //- Unit vector from a grain towards wall w.
+    DEM_HD Vector3d towardsWall(int w) const
+    {
+        Vector3d t = Vector3d::Zero();
+        t[axis[w]] = -normalSign[w];
+        return t;
+    }
+    DEM_HD Vector3d wallVelocity(int w) const
+    {
+        Vector3d u = Vector3d::Zero();
+        u[axis[w]] = velocity[w];
+        return u;
+    }
 };
 
 } // namespace DEM_KERNEL_NS
