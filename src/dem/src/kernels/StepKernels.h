@@ -76,7 +76,8 @@ struct GrainForceKernel
         const double mass = 1.0 / g.packedVelocities[8L * i + 3];
         force = mass * gvec - drag * v; // m g - c v
         torque = Vector3d::Zero();
-        force += fluid.force(x, grainVolume(r, 0.0), gvec);
+        if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
+            force += fluid.force(x, grainVolume(r, g.coreHalfLength[i]), gvec);
         addWallContacts(i, x, v, omega, r, force, torque);
     }
 

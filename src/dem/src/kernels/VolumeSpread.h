@@ -20,10 +20,11 @@ inline namespace DEM_KERNEL_NS
 {
 
 //- Solid volume of a grain of radius r and core half-length h: 4/3 pi r^3 + pi r^2 2h. For a
-//- sphere (h = 0) the second term is +0: the same bits as the sphere-only code.
+//- sphere (h = 0) the second term is +0: the same bits as the sphere-only code (and the same
+//- arithmetic as the engine's volume read-back).
 DEM_HD double grainVolume(double r, double h)
 {
-    return 4.18879020478639098 * r * r * r + 6.28318530717958648 * r * r * h;
+    return 4.18879020478639098 * r * r * r + M_PI * r * r * (2.0 * h);
 }
 
 //- Half-axis vector a = h R(q) e_z of a grain with core half-length h and orientation q
