@@ -33,12 +33,29 @@ void require(bool ok, const std::string& name, double value, const std::string& 
 
 void checkMaterial(const ContactMaterial& m, const std::string& prefix)
 {
+    require(m.friction >= 0, prefix + ".friction", m.friction, ">= 0");
+    if (m.law == ContactLaw::snow)
+    {
+        require(m.youngsModulus > 0 && std::isfinite(m.youngsModulus), prefix + ".youngsModulus",
+                m.youngsModulus, "> 0 and finite (snow law)");
+        require(m.tangentialToNormalStiffness >= 0 && m.tangentialToNormalStiffness <= 1,
+                prefix + ".tangentialToNormalStiffness", m.tangentialToNormalStiffness,
+                "in [0, 1] (snow law: k_t / k_n)");
+        require(m.normalDampingRatio >= 0 && m.normalDampingRatio <= 1,
+                prefix + ".normalDampingRatio", m.normalDampingRatio,
+                "in [0, 1] (snow law: fraction of critical damping)");
+        require(m.tangentialDampingRatio >= 0 && m.tangentialDampingRatio <= 1,
+                prefix + ".tangentialDampingRatio", m.tangentialDampingRatio,
+                "in [0, 1] (snow law: fraction of critical damping)");
+        return;
+    }
+    require(m.law == ContactLaw::linearSpring, prefix + ".law", double(int(m.law)),
+            "linearSpring or snow");
     require(m.normalStiffness > 0, prefix + ".normalStiffness", m.normalStiffness, "> 0");
     require(m.tangentialStiffness >= 0, prefix + ".tangentialStiffness", m.tangentialStiffness,
             ">= 0");
     require(m.normalDamping >= 0, prefix + ".normalDamping", m.normalDamping, ">= 0");
     require(m.tangentialDamping >= 0, prefix + ".tangentialDamping", m.tangentialDamping, ">= 0");
-    require(m.friction >= 0, prefix + ".friction", m.friction, ">= 0");
 }
 
 void checkParameters(const Parameters& p)
@@ -63,10 +80,21 @@ void checkWall(const WallSpec& w)
         require(w.mass > 0, "wall.mass", w.mass, "> 0 for a stress-controlled wall");
 }
 
-double stiffest(const Parameters& p)
+//- The largest normal or tangential stiffness of a material: its constants (linear spring), or
+//- k_n = E pi Rbar / 2 at the largest mean radius Rbar <= rMax and k_t = (k_t/k_n) k_n (snow).
+double stiffest(const ContactMaterial& m, double rMax)
 {
-    return std::max({p.grainGrain.normalStiffness, p.grainGrain.tangentialStiffness,
-                     p.grainWall.normalStiffness, p.grainWall.tangentialStiffness});
+    if (m.law == ContactLaw::snow)
+    {
+        const double kn = 0.5 * M_PI * m.youngsModulus * rMax;
+        return std::max(kn, m.tangentialToNormalStiffness * kn);
+    }
+    return std::max(m.normalStiffness, m.tangentialStiffness);
+}
+
+double stiffest(const Parameters& p, double rMax)
+{
+    return std::max(stiffest(p.grainGrain, rMax), stiffest(p.grainWall, rMax));
 }
 
 } // namespace
@@ -142,7 +170,8 @@ double System::criticalTimeStep() const
 {
     if (impl_->engine->grainCount() == 0)
         return 0.0;
-    return std::sqrt(impl_->engine->minimumMass() / stiffest(impl_->parameters));
+    return std::sqrt(impl_->engine->minimumMass() /
+                     stiffest(impl_->parameters, impl_->engine->maximumRadius()));
 }
 
 void System::step(int nSteps)
@@ -159,8 +188,9 @@ void System::step(int nSteps)
                 << p.maxTimeStepFraction * critical << " s = maxTimeStepFraction ("
                 << p.maxTimeStepFraction
                 << ") x critical time step sqrt(m_min / k_max) = " << critical
-                << " s (m_min = " << impl_->engine->minimumMass() << " kg, k_max = " << stiffest(p)
-                << " N/m); reduce timeStep";
+                << " s (m_min = " << impl_->engine->minimumMass()
+                << " kg, the smallest mass or capsule's I / lever^2; k_max = "
+                << stiffest(p, impl_->engine->maximumRadius()) << " N/m); reduce timeStep";
             throw Error(msg.str());
         }
     }
@@ -194,6 +224,10 @@ double System::prescribedGrainImpulseX() const
 std::size_t System::contactCount() const
 {
     return impl_->engine->contactCount();
+}
+GrainOverlap System::largestOverlap() const
+{
+    return impl_->engine->largestOverlap();
 }
 std::size_t System::pairCount() const
 {

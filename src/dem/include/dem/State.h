@@ -35,6 +35,17 @@ struct GrainData
     std::vector<GrainFlag> flag;
 };
 
+//- The deepest overlap between two grains (System::largestOverlap): depth of the overlap of
+//- the real shapes (the cores' closest points for capsules), also relative to the smaller
+//- radius of the two (dilation radii); add-order indices first < second, -1 when no grains
+//- touch (then both overlaps are 0).
+struct GrainOverlap
+{
+    double relativeOverlap = 0.0;
+    double overlap = 0.0; //!< [m]
+    int first = -1, second = -1;
+};
+
 //- State of one wall.
 struct WallData
 {

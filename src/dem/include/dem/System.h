@@ -58,7 +58,9 @@ public:
     // ---- running ------------------------------------------------------------------------
     //- Advance nSteps DEM steps (velocity Verlet). Throws if dt > maxTimeStepFraction * dt_crit.
     void step(int nSteps);
-    //- sqrt(m_min / k_max), k_max the largest normal or tangential stiffness in use.
+    //- sqrt(m_min / k_max), k_max the largest normal or tangential stiffness in use (snow law:
+    //- k_n = E pi R_max / 2 of the largest radius, and its k_t), m_min the smallest mass, or
+    //- for a capsule also I_min / (r + h)^2 (its rotation against the longest lever).
     double criticalTimeStep() const;
 
     // ---- read-back ----------------------------------------------------------------------
@@ -73,6 +75,10 @@ public:
     double prescribedGrainImpulseX() const;
     //- Grain-grain pairs currently touching (each counted once).
     std::size_t contactCount() const;
+    //- The pair of grains that overlap most relative to their smaller radius (shapes as they
+    //- are, through the neighbour search: a start-state check before the first step; builds
+    //- the neighbour list if it is not current).
+    GrainOverlap largestOverlap() const;
     //- Neighbour-list pairs stored (each counted once).
     std::size_t pairCount() const;
     std::size_t neighbourRebuildCount() const;

@@ -41,6 +41,8 @@ public:
     virtual double prescribedGrainForceX() const = 0;
     virtual double prescribedGrainImpulseX() const = 0;
     virtual std::size_t contactCount() const = 0;
+    virtual GrainOverlap largestOverlap() = 0;
+    virtual double maximumRadius() const = 0;
     virtual std::size_t pairCount() const = 0;
     virtual std::size_t rebuildCount() const = 0;
     virtual double time() const = 0;

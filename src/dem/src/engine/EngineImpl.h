@@ -91,7 +91,11 @@ public:
         if (nSteps <= 0)
             return;
         // Each pass over the grains ends one step and begins the next (see GatherKick).
-        double moved2 = exec_.maxOf(n, KickDrift{grains_.view(), dt});
+        double moved2 = 0.0;
+        withShapes(
+            [&](auto shapes) {
+                moved2 = exec_.maxOf(n, KickDrift<decltype(shapes)>{grains_.view(), dt});
+            });
         stopIfNotFinite(moved2);
         wallsKickDrift(dt);
         for (int s = 0; s < nSteps; ++s)
@@ -103,7 +107,7 @@ public:
             }
             computeForces(dt);
             const bool last = s + 1 == nSteps;
-            moved2 = exec_.maxOf(n, gatherKick(dt, dt, !last));
+            moved2 = gatherKick(dt, dt, !last);
             stopIfNotFinite(moved2);
             wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
@@ -128,6 +132,11 @@ public:
         return exec_.sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)});
     }
     std::size_t contactCount() const override;
+    GrainOverlap largestOverlap() override;
+    double maximumRadius() const override
+    {
+        return exec_.maxOf(grains_.size(), ComponentOf{self().grains_.real(fRadius)});
+    }
     std::size_t pairCount() const override { return std::size_t(pairs_.count()); }
     std::size_t rebuildCount() const override { return rebuilds_; }
     double time() const override { return time_; }
@@ -168,33 +177,94 @@ private:
         return b;
     }
 
-    static LinearSpringContact law(const ContactMaterial& m, double dt, bool frictional = true)
+    //- The contact-law family: calls f(law, frictionlessLaw) with the evaluators of material
+    //- m (ContactMaterial::law; frictionlessLaw: the same with mu = 0, for frictionless walls).
+    //- A new law: its evaluator (forces(..., ContactPair) as LinearSpringContact's), its
+    //- ContactLaw value and a branch here.
+    template <class F>
+    static void withLaw(const ContactMaterial& m, double dt, F&& f)
     {
-        return LinearSpringContact::make(m.normalStiffness, m.tangentialStiffness, m.normalDamping,
-                                         m.tangentialDamping, frictional ? m.friction : 0.0, dt);
+        switch (m.law)
+        {
+        case ContactLaw::snow:
+        {
+            auto snow = [&](double mu)
+            {
+                return SnowContact::make(m.youngsModulus, m.tangentialToNormalStiffness,
+                                         m.normalDampingRatio, m.tangentialDampingRatio, mu, dt);
+            };
+            f(snow(m.friction), snow(0.0));
+            return;
+        }
+        case ContactLaw::linearSpring:
+            break;
+        }
+        auto linear = [&](double mu)
+        {
+            return LinearSpringContact::make(m.normalStiffness, m.tangentialStiffness,
+                                             m.normalDamping, m.tangentialDamping, mu, dt);
+        };
+        f(linear(m.friction), linear(0.0));
+    }
+
+    //- The shape family: SphereShapes while every grain is a sphere (today's arithmetic and
+    //- the compact load record), CapsuleShapes once any grain has a core segment.
+    template <class F>
+    void withShapes(F&& f) const
+    {
+        if (grains_.hasCapsules())
+            f(CapsuleShapes{});
+        else
+            f(SphereShapes{});
     }
 
     //- Per-pair loads for GatherKick. historyDt: time step of the tangential spring increment
     //- (0: evaluate without advancing).
     void computeForces(double historyDt)
     {
-        Exec::forEachPair(pairs_.count(), PairForceKernel{grains_.view(), pairs_.view(), boxView(),
-                                                          law(params_.grainGrain, historyDt)});
+        withShapes(
+            [&](auto shapes)
+            {
+                withLaw(params_.grainGrain, historyDt,
+                        [&](auto law, auto)
+                        {
+                            using Kernel = PairForceKernel<decltype(shapes), decltype(law)>;
+                            Exec::forEachPair(pairs_.count(), Kernel{grains_.view(), pairs_.view(),
+                                                                     boxView(), law});
+                        });
+            });
     }
 
     //- The pass that ends a step: per-grain loads (gravity, drag, fluid, walls as they are now,
     //- before wallsFinishStep), the pairs' loads, the kicks and, with driftNext, the next drift.
-    GatherKick gatherKick(double dt, double historyDt, bool driftNext)
+    //- Returns the step's largest squared move (see movedOrInfinity).
+    double gatherKick(double dt, double historyDt, bool driftNext)
     {
-        GrainForceKernel grainLoads{grains_.view(),
-                                    wallsView(),
-                                    law(params_.grainWall, historyDt),
-                                    law(params_.grainWall, historyDt, false),
-                                    {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
-                                    params_.viscousDrag,
-                                    fluid_};
-        grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
-        return GatherKick{grains_.view(), pairs_.view(), grainLoads, dt, driftNext};
+        double moved2 = 0.0;
+        withShapes(
+            [&](auto shapes)
+            {
+                withLaw(params_.grainWall, historyDt,
+                        [&](auto law, auto frictionless)
+                        {
+                            using Shapes = decltype(shapes);
+                            using Law = decltype(law);
+                            GrainForceKernel<Shapes, Law> grainLoads{
+                                grains_.view(),
+                                wallsView(),
+                                law,
+                                frictionless,
+                                {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                                params_.viscousDrag,
+                                fluid_};
+                            grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
+                            moved2 =
+                                exec_.maxOf(grains_.size(),
+                                            GatherKick<Shapes, Law>{grains_.view(), pairs_.view(),
+                                                                    grainLoads, dt, driftNext});
+                        });
+            });
+        return moved2;
     }
 
     WallsView wallsView() const
@@ -231,7 +301,11 @@ private:
 
     double wallGrainForce(int w) const
     {
-        return exec_.sumOf(grains_.size(), WallForceOf{self().grains_.real(fWallState), w});
+        EngineImpl& e = self();
+        return exec_.sumOf(
+            grains_.size(),
+            WallForceOf{e.grains_.real(fWallState),
+                        grains_.hasCapsules() ? e.grains_.real(fWallStateEnd) : nullptr, w});
     }
 
     void wallsFinishStep(double dt)
@@ -257,13 +331,20 @@ private:
         rebuild();
         Exec::forEach(n, PackGrains{grains_.view()});
         computeForces(0.0);
-        exec_.maxOf(n, gatherKick(0.0, 0.0, false));
+        (void)n;
+        gatherKick(0.0, 0.0, false);
         forcesStale_ = false;
     }
 
     int reactionComponents() const
     {
         return grains_.hasCapsules() ? kCapsuleReactionComponents : kSphereReactionComponents;
+    }
+
+    //- The core half-lengths for kernels that take nullptr as "spheres only".
+    double* halfLengths() const
+    {
+        return grains_.hasCapsules() ? self().grains_.real(fCoreHalfLength) : nullptr;
     }
 
     CellGridView cellGrid(); //!< also throwLeftTheNumbers if grains are absurdly far apart
@@ -321,6 +402,7 @@ private:
     //- Scratch of the read-back and coupling calls (deposit each fluid step, grains() at each
     //- diagnostics write): kept, so those calls allocate no device memory once sized.
     mutable Vec<double> depositSolid_, depositMomentum_, depositPorosity_, fluidForceScratch_;
+    mutable Vec<double> overlapScratch_, depthScratch_;
     mutable Vec<int> contactScratch_;
     FluidView fluid_;
     bool needRebuild_ = true;

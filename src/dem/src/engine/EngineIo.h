@@ -159,7 +159,46 @@ double EngineImpl<Exec>::minimumMass() const
 {
     const int n = grains_.size();
     const double* inverseMass = self().grains_.real(fInverseMass);
-    return 1.0 / thrust::reduce(exec_.policy(), inverseMass, inverseMass + n, 0.0, MaxOp());
+    if (!grains_.hasCapsules())
+        return 1.0 / thrust::reduce(exec_.policy(), inverseMass, inverseMass + n, 0.0, MaxOp());
+    return 1.0 / exec_.maxOf(n, EffectiveInverseMass{self().grains_.view()});
+}
+
+template <class Exec>
+GrainOverlap EngineImpl<Exec>::largestOverlap()
+{
+    const int n = grains_.size();
+    GrainOverlap out;
+    if (n < 2)
+        return out;
+    if (needRebuild_ || grainsAtLastBuild_ != n)
+    {
+        Exec::forEach(n, UnpackGrains{grains_.view()});
+        rebuild();
+        forcesStale_ = true; // the pair loads belong to the list before
+    }
+    overlapScratch_.resize(n);
+    depthScratch_.resize(n);
+    contactScratch_.resize(n);
+    Exec::forEach(n, DeepestOverlap{grains_.view(), pairs_.view(), boxView(), grains_.hasCapsules(),
+                                    thrust::raw_pointer_cast(overlapScratch_.data()),
+                                    thrust::raw_pointer_cast(depthScratch_.data()),
+                                    thrust::raw_pointer_cast(contactScratch_.data())});
+    std::vector<double> relative(n), depth(n);
+    std::vector<int> partner(n);
+    thrust::copy(overlapScratch_.begin(), overlapScratch_.end(), relative.begin());
+    thrust::copy(depthScratch_.begin(), depthScratch_.end(), depth.begin());
+    thrust::copy(contactScratch_.begin(), contactScratch_.end(), partner.begin());
+    const std::vector<int> id = grains_.hostInt(fId);
+    for (int i = 0; i < n; ++i)
+        if (partner[i] >= 0 && relative[i] > out.relativeOverlap)
+        {
+            out.relativeOverlap = relative[i];
+            out.overlap = depth[i];
+            out.first = std::min(id[i], id[partner[i]]);
+            out.second = std::max(id[i], id[partner[i]]);
+        }
+    return out;
 }
 
 template <class Exec>
@@ -175,7 +214,8 @@ GrainData EngineImpl<Exec>::grains() const
         perGrain.resize(n);
         EngineImpl& e = self();
         Exec::forEach(n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(), true,
-                                       thrust::raw_pointer_cast(perGrain.data())});
+                                       thrust::raw_pointer_cast(perGrain.data()),
+                                       grains_.hasCapsules()});
         thrust::copy(perGrain.begin(), perGrain.end(), contacts.begin());
     }
     GrainData out;
@@ -275,8 +315,9 @@ std::size_t EngineImpl<Exec>::contactCount() const
     if (grainsAtLastBuild_ != n || needRebuild_)
         return 0;
     EngineImpl& e = self();
-    return std::size_t(std::llround(exec_.sumOf(
-        n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(), false, nullptr})));
+    return std::size_t(
+        std::llround(exec_.sumOf(n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(),
+                                                  false, nullptr, grains_.hasCapsules()})));
 }
 
 inline GridView gridView(const UniformGrid& grid, const char* caller)

@@ -18,8 +18,11 @@ template <class Exec>
 CellGridView EngineImpl<Exec>::cellGrid()
 {
     const int n = grains_.size();
-    const double* radius = grains_.real(fRadius);
-    const double rMax = thrust::reduce(exec_.policy(), radius, radius + n, 0.0, MaxOp());
+    // One cell size for all: the largest bounding radius (radius + coreHalfLength) of any grain,
+    // doubled, plus the skin, so that every listed pair lies in neighbouring cells. Mixed sizes
+    // make the cells as large as the largest grain needs (small grains then test more
+    // candidates, never miss one).
+    const double rMax = exec_.maxOf(n, BoundingRadiusOf{grains_.real(fRadius), halfLengths()});
     const BoxView box = boxView();
     double lower[3], upper[3];
     for (int d = 0; d < 3; ++d)
@@ -40,9 +43,10 @@ CellGridView EngineImpl<Exec>::cellGrid()
     for (int d = 0; d < 2; ++d)
         if (box.periodic[d] && box.length[d] < 2.0 * cellSize)
             throw Error("periodic box length " + std::to_string(box.length[d]) + " m in " +
-                        (d == 0 ? "x" : "y") + " is below 2 (2 r_max + neighbourSkin) = " +
+                        (d == 0 ? "x" : "y") + " is below 2 (2 b_max + neighbourSkin) = " +
                         std::to_string(2.0 * cellSize) +
-                        " m; a grain would meet two images of another");
+                        " m (b_max: the largest radius + coreHalfLength); a grain would meet "
+                        "two images of another");
     // Few, large cells when grains are spread thin (a gas): the search stays correct.
     const double cellLimit = 4.0 * n + 64.0;
     for (;;)
@@ -102,8 +106,9 @@ void EngineImpl<Exec>::rebuild()
 
     // Half list (owner < partner): count, scan, fill.
     pairs_.swap(oldPairs_);
-    const NeighbourSearch search{grains_.vec3(fPosition), grains_.real(fRadius), box, cells,
-                                 params_.neighbourSkin};
+    const NeighbourSearch search{
+        grains_.vec3(fPosition), grains_.real(fRadius), halfLengths(), box, cells,
+        params_.neighbourSkin};
     counts_.resize(n + 1);
     int* counts = thrust::raw_pointer_cast(counts_.data());
     counts_[n] = 0;
@@ -153,6 +158,8 @@ void EngineImpl<Exec>::rebuild()
 
     const double* x = grains_.real(fPosition);
     thrust::copy(exec_.policy(), x, x + 3L * n, grains_.real(fPositionAtBuild));
+    if (grains_.hasCapsules())
+        Exec::forEach(n, StoreHalfAxisAtBuild{grains_.view()});
     Exec::forEach(n, PackGrains{grains_.view()});
     grainsAtLastBuild_ = n;
     needRebuild_ = false;

@@ -41,6 +41,7 @@ enum RealField
     fPrincipalInertia, //!< (I_perp, I_perp, I_axial), body frame
     fAngularMomentum,  //!< global angular momentum (integrated for capsules; 0 for spheres)
     fWallStateEnd,     //!< interleaved, a capsule's second end (GrainView::wallStateEnd)
+    fHalfAxisAtBuild,  //!< half-axis vector at the last rebuild (skin check with rotation)
     kRealFieldCount
 };
 
@@ -79,7 +80,8 @@ inline const FieldInfo& realFieldInfo(int f)
                                                      {"coreHalfLength", 1},
                                                      {"principalInertia", 3},
                                                      {"angularMomentum", 3},
-                                                     {"wallStateEnd", kWallStateComponents, true}};
+                                                     {"wallStateEnd", kWallStateComponents, true},
+                                                     {"halfAxisAtBuild", 3}};
     return table[f];
 }
 
@@ -145,6 +147,7 @@ public:
         g.orientation = real(fOrientation);
         g.principalInertia = vec3(fPrincipalInertia);
         g.angularMomentum = vec3(fAngularMomentum);
+        g.halfAxisAtBuild = vec3(fHalfAxisAtBuild);
         g.impulseX = real(fImpulseX);
         g.flag = integer(fFlag);
         g.wallContacts = integer(fWallContacts);
@@ -160,12 +163,8 @@ public:
         if (capsules_)
         {
             if (packedHalfAxis_.size() != 4 * std::size_t(n_))
-            {
                 packedHalfAxis_.resize(4 * std::size_t(n_));
-                packedHalfAxisAtBuild_.resize(4 * std::size_t(n_));
-            }
             g.packedHalfAxis = thrust::raw_pointer_cast(packedHalfAxis_.data());
-            g.packedHalfAxisAtBuild = thrust::raw_pointer_cast(packedHalfAxisAtBuild_.data());
         }
         return g;
     }
@@ -277,7 +276,7 @@ private:
     std::array<Vec<int>, kIntFieldCount> ints_;
     Vec<double> scratchReal_;
     Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_;
-    Vec<double> packedHalfAxis_, packedHalfAxisAtBuild_;
+    Vec<double> packedHalfAxis_;
     bool capsules_ = false;
     Vec<int> scratchInt_;
 };

@@ -8,6 +8,7 @@
 // brought up to date at the end of the call and before a neighbour rebuild.
 #pragma once
 
+#include "kernels/RigidBody.h"
 #include "kernels/Views.h"
 
 #include <cmath>
@@ -44,6 +45,44 @@ DEM_HD void kick(const GrainView& g, int i, int flag, double halfDt, double inve
         omega.setZero();
 }
 
+//- Half kick of a capsule's global angular momentum L by the torque, and its angular velocity
+//- omega = R I^-1 R^T L at orientation q; a capsule that is not free does not rotate.
+DEM_HD void kickRotation(int flag, double halfDt, const Vector3d& torque, const Quaterniond& q,
+                         const Vector3d& inertia, Vector3d& L, Vector3d& omega)
+{
+    if (flag != kFlagFree)
+    {
+        L.setZero();
+        omega.setZero();
+        return;
+    }
+    L = L + halfDt * torque;
+    omega = angularVelocityOf(q, inertia, L);
+}
+
+//- Drift of a free capsule's orientation over dt at constant L (freeRotation, RigidBody.h):
+//- stores q, refreshes its packed half-axis vector and returns omega at the new orientation.
+DEM_HD void rotate(const GrainView& g, int i, int flag, double dt, const Vector3d& inertia,
+                   const Vector3d& L, Quaterniond& q, Vector3d& omega)
+{
+    if (flag != kFlagFree)
+        return;
+    q = freeRotation(q, inertia, L, dt);
+    omega = angularVelocityOf(q, inertia, L);
+    g.storeOrientation(i, q);
+    g.packHalfAxis(i);
+}
+
+//- Squared bound on how far any point of grain i's core moved since the last rebuild, x its
+//- centre now: |x - x_build| + |a - a_build| (a point x + u a, |u| <= 1, moved at most that).
+DEM_HD double endsMoved2(const GrainView& g, int i, const Vector3d& x)
+{
+    const double* b = g.packedPositionAtBuild + 4L * i;
+    const double moved = (x - Vector3d(b[0], b[1], b[2])).norm() +
+                         (g.packedHalfAxisOf(i) - g.halfAxisAtBuild(i)).norm();
+    return moved * moved;
+}
+
 //- Packed copy of the rebuild positions, for the displacement check.
 DEM_HD void packBuildPosition(const GrainView& g, int i)
 {
@@ -60,7 +99,9 @@ DEM_HD double movedOrInfinity(double moved2)
     return moved2 == moved2 ? moved2 : HUGE_VAL;
 }
 
-//- First kick and drift of a step() call; returns |x - x_build|^2 (see movedOrInfinity).
+//- First kick and drift of a step() call; returns |x - x_build|^2 (see movedOrInfinity; a
+//- capsule: endsMoved2). Shapes: SphereShapes or CapsuleShapes (StepKernels.h).
+template <class Shapes>
 struct KickDrift
 {
     GrainView g;
@@ -68,6 +109,9 @@ struct KickDrift
 
     DEM_HD double operator()(int i) const
     {
+        if constexpr (Shapes::kCapsules)
+            if (g.coreHalfLength[i] > 0.0)
+                return capsule(i);
         Vector3d v = g.velocity(i), omega = g.angularVelocity(i);
         kick(g, i, g.flag[i], 0.5 * dt, g.inverseMass[i], g.inverseInertia[i], g.force(i),
              g.torque(i), v, omega);
@@ -79,6 +123,33 @@ struct KickDrift
         packBuildPosition(g, i);
         return movedOrInfinity((x - g.positionAtBuild(i)).squaredNorm());
     }
+
+    DEM_HD double capsule(int i) const
+    {
+        const int flag = g.flag[i];
+        Vector3d v = g.velocity(i), omega = g.angularVelocity(i), L = g.angularMomentum(i);
+        Quaterniond q = g.orientationOf(i);
+        const Vector3d inertia = g.principalInertia(i), torque = g.torque(i);
+        kick(g, i, flag, 0.5 * dt, g.inverseMass[i], g.inverseInertia[i], g.force(i), torque, v,
+             omega);
+        kickRotation(flag, 0.5 * dt, torque, q, inertia, L, omega);
+        const Vector3d x = g.position(i) + dt * v;
+        g.position.store(i, x);
+        rotate(g, i, flag, dt, inertia, L, q, omega);
+        g.velocity.store(i, v);
+        g.angularVelocity.store(i, omega);
+        g.angularMomentum.store(i, L);
+        g.pack(i);
+        packBuildPosition(g, i);
+        return movedOrInfinity(endsMoved2(g, i, x));
+    }
+};
+
+//- The core's half-axis vector at a rebuild (systems with capsules; the skin check).
+struct StoreHalfAxisAtBuild
+{
+    GrainView g;
+    DEM_HD void operator()(int i) const { g.halfAxisAtBuild.store(i, g.halfAxis(i)); }
 };
 
 //- Refresh all packed copies from the SoA fields (after adding, importing or re-sorting).

@@ -6,6 +6,8 @@
 #pragma once
 
 #include "backends/HostDevice.h"
+#include "kernels/ContactPair.h"
+#include "kernels/TangentialSpring.h"
 
 #include <cmath>
 
@@ -51,8 +53,7 @@ struct LinearSpringContact
 
     //- The same law split into its parts: returns the normal magnitude (the force on i is
     //- -magnitude n + tangentialForce). Branch-free (selects, no data-dependent branches), so
-    //- that the pair kernel vectorises across pairs: the rotation factor and the Coulomb cap
-    //- differ at random from contact to contact.
+    //- that the pair kernel vectorises across pairs.
     DEM_HD double forces(const Vector3d& n, double overlap, const Vector3d& relativeVelocity,
                          Vector3d& tangentialDisplacement, Vector3d& tangentialForce) const
     {
@@ -60,34 +61,18 @@ struct LinearSpringContact
         const double normalMagnitude = normalStiffness * overlap + normalDamping * approachSpeed;
         const Vector3d tangentialVelocity = relativeVelocity - approachSpeed * n;
 
-        // Rotate the stored displacement into the current tangent plane, keeping its length.
-        Vector3d xi = tangentialDisplacement;
-        const double normalPart = xi.dot(n);
-        const double normal2 = normalPart * normalPart;
-        const double lengthAfter2 = xi.squaredNorm() - normal2;
-        xi -= normalPart * n;
-        // Restore the length: factor sqrt(1 + e), e = normal2 / lengthAfter2 ~ (rotation per
-        // step)^2. Below 1e-17 the series rounds to exactly 1 (the common quasi-static case);
-        // below 1e-4 it is exact to round-off.
-        const bool rotated = lengthAfter2 > 0.0;
-        const double e = rotated ? normal2 / (rotated ? lengthAfter2 : 1.0) : 0.0;
-        const double series = 1.0 + e * (0.5 - 0.125 * e);
-        xi *= e < 1e-4 ? series : std::sqrt(1.0 + e);
-        xi += tangentialVelocity * timeStep;
-
-        Vector3d ft = -tangentialStiffness * xi - tangentialDamping * tangentialVelocity;
-        const double limit = friction * std::fabs(normalMagnitude);
-        const double magnitude2 = ft.squaredNorm();
-        // Gross slip: cap the force and shorten the spring to |xi| = mu |f_n| / k_t.
-        const bool slip = magnitude2 > limit * limit;
-        const double cap = limit / std::sqrt(slip ? magnitude2 : 1.0);
-        const double shorten = -cap * inverseTangentialStiffness;
-        for (int c = 0; c < 3; ++c)
-        {
-            tangentialDisplacement[c] = tangential * (slip ? shorten * ft[c] : xi[c]);
-            tangentialForce[c] = tangential * (slip ? cap * ft[c] : ft[c]);
-        }
+        tangentialSpringForce(n, tangentialVelocity, normalMagnitude, tangentialStiffness,
+                              tangentialDamping, inverseTangentialStiffness, friction, tangential,
+                              timeStep, tangentialDisplacement, tangentialForce);
         return normalMagnitude;
+    }
+
+    //- The call every law answers (the pair's radii and masses, unused by this law).
+    DEM_HD double forces(const Vector3d& n, double overlap, const Vector3d& relativeVelocity,
+                         Vector3d& tangentialDisplacement, Vector3d& tangentialForce,
+                         const ContactPair&) const
+    {
+        return forces(n, overlap, relativeVelocity, tangentialDisplacement, tangentialForce);
     }
 };
 

@@ -1,7 +1,8 @@
 // NeighbourKernels.h
 // Neighbour search on a uniform cell grid: grains are sorted by cell (cellStart[c] is the first
-// grain of cell c), pairs closer than r_i + r_j + skin are listed once, owned by the lower
-// index. Count and fill kernels share one traversal, so their results always agree. The
+// grain of cell c), pairs whose centres are closer than b_i + b_j + skin are listed once, owned
+// by the lower index (b = radius + coreHalfLength, the bounding radius: a grain lies within b
+// of its centre). Count and fill kernels share one traversal, so their results always agree. The
 // history transfer keeps each contact's tangential spring across rebuilds and re-sorting.
 #pragma once
 
@@ -135,11 +136,26 @@ struct CellKey
     DEM_HD void operator()(int i) const { key[i] = cells.cellOf(position(i)); }
 };
 
+//- Bounding radius of grain i: radius + coreHalfLength (coreHalfLength nullptr: spheres).
+DEM_HD double boundingRadius(const double* radius, const double* coreHalfLength, int i)
+{
+    return coreHalfLength ? radius[i] + coreHalfLength[i] : radius[i];
+}
+
+//- max(0, bounding radius) over the grains (Exec::maxOf).
+struct BoundingRadiusOf
+{
+    const double* radius;
+    const double* coreHalfLength;
+    DEM_HD double operator()(int i) const { return boundingRadius(radius, coreHalfLength, i); }
+};
+
 //- Shared neighbour test: higher = true lists partners j > i, false lists j < i.
 struct NeighbourSearch
 {
     Vec3Array position;
     const double* radius;
+    const double* coreHalfLength; //!< nullptr in a system of spheres
     BoxView box;
     CellGridView cells;
     double skin;
@@ -148,17 +164,17 @@ struct NeighbourSearch
     DEM_HD void forEachNeighbour(int i, bool higher, Visit&& visit) const
     {
         const Vector3d x = position(i);
-        const double ri = radius[i];
-        cells.forEachNearbyGrain(x,
-                                 [&](int j)
-                                 {
-                                     if (higher ? j <= i : j >= i)
-                                         return;
-                                     const double cutoff = (ri + radius[j]) + skin;
-                                     if (box.separation(x, position(j)).squaredNorm() <
-                                         cutoff * cutoff)
-                                         visit(j);
-                                 });
+        const double ri = boundingRadius(radius, coreHalfLength, i);
+        cells.forEachNearbyGrain(
+            x,
+            [&](int j)
+            {
+                if (higher ? j <= i : j >= i)
+                    return;
+                const double cutoff = (ri + boundingRadius(radius, coreHalfLength, j)) + skin;
+                if (box.separation(x, position(j)).squaredNorm() < cutoff * cutoff)
+                    visit(j);
+            });
     }
 };
 

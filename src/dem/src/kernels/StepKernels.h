@@ -1,12 +1,18 @@
 // StepKernels.h
-// The force kernels of a velocity-Verlet step, written once for both backends: per pair of the
-// half list the contact law (PairForceKernel, loads to PairView::reaction); GatherKick adds per
-// grain gravity, drag, fluid force and walls (GrainForceKernel) and the pairs' loads in a fixed
-// order, then kicks and drifts.
+// The force kernels of a velocity-Verlet step, written once for both backends and templated on
+// the shape family (Shapes: SphereShapes, CapsuleShapes) and the contact law (Law:
+// LinearSpringContact, SnowContact; the engine picks one per ContactMaterial::law at run time):
+// per pair of the half list the contact law (PairForceKernel, loads to PairView::reaction);
+// GatherKick adds per grain gravity, drag, fluid force and walls (GrainForceKernel) and the
+// pairs' loads in a fixed order, then kicks and drifts (rotating capsules in the body frame).
 #pragma once
 
+#include "kernels/CapsuleGeometry.h"
+#include "kernels/ContactPair.h"
 #include "kernels/IntegrationKernels.h"
 #include "kernels/LinearSpringContact.h"
+#include "kernels/RigidBody.h"
+#include "kernels/SnowContact.h"
 #include "kernels/TrilinearWeights.h"
 #include "kernels/Views.h"
 #include "kernels/VolumeSpread.h"
@@ -55,13 +61,86 @@ struct FluidForceOnGrains
     }
 };
 
+//- Shape families: which geometry the pair and wall kernels use and which load record a pair
+//- stores. A system of spheres only takes SphereShapes (the sphere arithmetic and its compact
+//- record); a system with any capsule takes CapsuleShapes for every grain (a sphere is a
+//- capsule with a zero-length core). A new family: a struct like these, its branch in
+//- PairForceKernel, GrainForceKernel and GatherKick, and its selection in EngineImpl::withShapes.
+struct SphereShapes
+{
+    static constexpr bool kCapsules = false;
+    static constexpr int kReactionComponents = kSphereReactionComponents;
+};
+struct CapsuleShapes
+{
+    static constexpr bool kCapsules = true;
+    static constexpr int kReactionComponents = kCapsuleReactionComponents;
+};
+
+//- Two touching spheres (or sphere and wall: radiusJ = 0, omegaJ = 0) under any law: loads
+//- with lever arms to the middle of the overlap. With LinearSpringContact the arithmetic of
+//- evaluateContact (the law ignores the pair).
+template <class Law>
+DEM_HD ContactLoads sphereContact(const Law& law, const Vector3d& n, double overlap, double radiusI,
+                                  double radiusJ, const Vector3d& velocityI,
+                                  const Vector3d& velocityJ, const Vector3d& omegaI,
+                                  const Vector3d& omegaJ, Vector3d& history,
+                                  const ContactPair& pair)
+{
+    const double leverI = radiusI - 0.5 * overlap;
+    const double leverJ = radiusJ - 0.5 * overlap;
+    // omega_i x (l_i n) + omega_j x (l_j n) = (l_i omega_i + l_j omega_j) x n
+    const Vector3d relative = velocityI - velocityJ + (leverI * omegaI + leverJ * omegaJ).cross(n);
+    Vector3d tangentialForce;
+    const double normalMagnitude = law.forces(n, overlap, relative, history, tangentialForce, pair);
+    ContactLoads loads;
+    loads.forceOnI = tangentialForce - normalMagnitude * n;
+    loads.nCrossF = n.cross(tangentialForce); // n x n = 0
+    loads.leverI = leverI;
+    loads.leverJ = leverJ;
+    loads.torqueOnI = leverI * loads.nCrossF;
+    loads.torqueOnJ = leverJ * loads.nCrossF;
+    return loads;
+}
+
+//- Loads of a contact at a point off the line of centres (capsules): force on i, and the
+//- torques (contact point - centre) x force on i and on j (whose force is minus i's).
+struct PointContactLoads
+{
+    Vector3d forceOnI, torqueOnI, torqueOnJ;
+};
+
+//- n: unit normal from i towards j; offsetI, offsetJ: contact point minus each centre (j: a
+//- wall passes zero with omegaJ = 0 and its velocity).
+template <class Law>
+DEM_HD PointContactLoads pointContact(const Law& law, const Vector3d& n, double overlap,
+                                      const Vector3d& offsetI, const Vector3d& offsetJ,
+                                      const Vector3d& velocityI, const Vector3d& velocityJ,
+                                      const Vector3d& omegaI, const Vector3d& omegaJ,
+                                      Vector3d& history, const ContactPair& pair)
+{
+    const Vector3d relative =
+        velocityI + omegaI.cross(offsetI) - (velocityJ + omegaJ.cross(offsetJ));
+    Vector3d tangentialForce;
+    const double normalMagnitude = law.forces(n, overlap, relative, history, tangentialForce, pair);
+    PointContactLoads loads;
+    loads.forceOnI = tangentialForce - normalMagnitude * n;
+    loads.torqueOnI = offsetI.cross(loads.forceOnI);
+    loads.torqueOnJ = loads.forceOnI.cross(offsetJ); // offsetJ x (-f)
+    return loads;
+}
+
 //- Per grain: gravity, drag, fluid force and walls at the packed state (evaluated by GatherKick,
-//- before it adds the pairs' loads).
+//- before it adds the pairs' loads). Walls: a sphere has one contact per wall (record in
+//- GrainView::wallState); with CapsuleShapes each end of the core is a contact with its own
+//- tangential history (ends u = -1 and u = +1: wallState and wallStateEnd; wallContacts bit w
+//- and bit kMaxWalls + w), and the wall's force sums both.
+template <class Shapes, class WallLaw>
 struct GrainForceKernel
 {
     GrainView g;
     WallsView walls;
-    LinearSpringContact wallLaw, frictionlessWallLaw;
+    WallLaw wallLaw, frictionlessWallLaw;
     double gravity[3];
     double drag;
     FluidView fluid;
@@ -77,15 +156,19 @@ struct GrainForceKernel
         force = mass * gvec - drag * v; // m g - c v
         torque = Vector3d::Zero();
         if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
-            force += fluid.force(x, grainVolume(r, g.coreHalfLength[i]), gvec);
-        addWallContacts(i, x, v, omega, r, force, torque);
+            force +=
+                fluid.force(x, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
+        if constexpr (Shapes::kCapsules)
+            addEndContacts(i, x, v, omega, r, force, torque);
+        else
+            addWallContacts(i, x, v, omega, r, force, torque);
     }
 
     //- Prefetch grain i's wall records if it is near a wall: the few grains on a wall are
     //- scattered through the cell order, where the prefetcher cannot foresee them.
     DEM_HD void prefetchWallState(int i) const
     {
-        if (i >= g.n)
+        if (Shapes::kCapsules || i >= g.n)
             return;
         const double* xr = g.packedPositionRadius + 4L * i;
         const double reach = 1.1 * xr[3]; // near contact
@@ -112,10 +195,10 @@ struct GrainForceKernel
             }
             touching |= 1 << w;
             Vector3d history(h[0], h[1], h[2]);
-            const Vector3d normal = walls.towardsWall(w);
-            const ContactLoads loads = evaluateContact(
-                walls.frictional[w] ? wallLaw : frictionlessWallLaw, normal, overlap, r, 0.0, v,
-                walls.wallVelocity(w), omega, Vector3d::Zero(), history);
+            const ContactLoads loads = sphereContact(
+                walls.frictional[w] ? wallLaw : frictionlessWallLaw, walls.towardsWall(w), overlap,
+                r, 0.0, v, walls.wallVelocity(w), omega, Vector3d::Zero(), history,
+                ContactPair{r, r, g.packedVelocities[8L * i + 3], 0.0});
             h[0] = history.x();
             h[1] = history.y();
             h[2] = history.z();
@@ -126,18 +209,61 @@ struct GrainForceKernel
         if (touching != wasTouching)
             g.wallContacts[i] = touching;
     }
+
+    //- Capsules (and the spheres of a system with capsules): a contact per touching end.
+    DEM_HD void addEndContacts(int i, const Vector3d& x, const Vector3d& v, const Vector3d& omega,
+                               double r, Vector3d& force, Vector3d& torque) const
+    {
+        const int wasTouching = g.wallContacts[i];
+        int touching = 0;
+        const Vector3d a = g.packedHalfAxisOf(i);
+        const ContactPair pair{r, r, g.packedVelocities[8L * i + 3], 0.0};
+        for (int w = 0; w < walls.count; ++w)
+        {
+            const Vector3d m = -walls.towardsWall(w);
+            const CapsulePlaneGeometry plane =
+                capsulePlaneGeometry(x, a, r, walls.position[w] * m.cwiseAbs(), m);
+            for (int e = 0; e < 2; ++e)
+            {
+                const int bit = 1 << (w + e * kMaxWalls);
+                double* h = wallRecordOf(e == 0 ? g.wallState : g.wallStateEnd, i, w);
+                const PlaneContactPoint& end = plane.ends[e];
+                if (!end.touching)
+                {
+                    if (wasTouching & bit)
+                        h[0] = h[1] = h[2] = h[3] = 0.0;
+                    continue;
+                }
+                touching |= bit;
+                Vector3d history(h[0], h[1], h[2]);
+                const PointContactLoads loads =
+                    pointContact(walls.frictional[w] ? wallLaw : frictionlessWallLaw, -m,
+                                 end.overlap, end.offset, Vector3d::Zero(), v,
+                                 walls.wallVelocity(w), omega, Vector3d::Zero(), history, pair);
+                h[0] = history.x();
+                h[1] = history.y();
+                h[2] = history.z();
+                h[3] = -loads.forceOnI[walls.axis[w]];
+                force += loads.forceOnI;
+                torque += loads.torqueOnI;
+            }
+        }
+        if (touching != wasTouching)
+            g.wallContacts[i] = touching;
+    }
 };
 
-//- Per pair of the half list: the contact law when the spheres overlap, else zero loads and
+//- Per pair of the half list: the contact law when the grains overlap, else zero loads and
 //- a cleared history. Straight-line code (selects, no branches) so that the CPU loop
-//- vectorises across pairs; one thread per pair on the GPU. Owner and partner sums are
-//- GatherKick's, in a fixed order.
+//- vectorises across pairs (both shape families); one thread per pair on the GPU. Owner and
+//- partner sums are GatherKick's, in a fixed order.
+template <class Shapes, class Law>
 struct PairForceKernel
 {
     GrainView g;
     PairView pairs;
     BoxView box;
-    LinearSpringContact law;
+    Law law;
 
     //- a[k], a[k + s], a[k + 2 s], loaded by value: indexed loads (not references into the
     //- arrays) are what GCC turns into vector gathers.
@@ -152,6 +278,14 @@ struct PairForceKernel
     static constexpr double kCoincidentFraction2 = 1e-24;
 
     DEM_HD void operator()(long p) const
+    {
+        if constexpr (Shapes::kCapsules)
+            capsulePair(p);
+        else
+            spherePair(p);
+    }
+
+    DEM_HD void spherePair(long p) const
     {
         const long i = pairs.owner[p], j = pairs.partner[p];
         const double* xr = g.packedPositionRadius;
@@ -174,16 +308,16 @@ struct PairForceKernel
                          coincident ? 1.0 : d.z() * inverse);
         const double overlap = sumRadii - distance;
 
-        const long cs = pairs.stride();
         constexpr int kReactionComponents = kSphereReactionComponents;
+        const long cs = pairs.stride();
         const long r0 = p * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* h = pairs.history;
         double* out = pairs.reaction;
         const long hs = pairs.historyStride();
         Vector3d history = load(h, p, hs);
-        const ContactLoads loads =
-            evaluateContact(law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j),
-                            load(vw, 8 * i + 4), load(vw, 8 * j + 4), history);
+        const ContactLoads loads = sphereContact(
+            law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4),
+            load(vw, 8 * j + 4), history, ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
         // Select, then store unconditionally (conditional stores would not vectorise).
         double value[3 * kHistoryVectors + kReactionComponents];
         for (int c = 0; c < 3; ++c)
@@ -199,23 +333,68 @@ struct PairForceKernel
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
     }
+
+    //- Cores' closest points (CapsuleGeometry.h; a sphere's core is its centre), the contact
+    //- at the middle of the overlap, the full torques on both grains.
+    DEM_HD void capsulePair(long p) const
+    {
+        const long i = pairs.owner[p], j = pairs.partner[p];
+        const double* xr = g.packedPositionRadius;
+        const double* vw = g.packedVelocities;
+        const double* ax = g.packedHalfAxis;
+        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
+        const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
+        const CapsulePairGeometry geometry =
+            capsulePairGeometry(d, load(ax, 4 * i), load(ax, 4 * j), ri, rj);
+        const bool touching = geometry.touching;
+
+        constexpr int kReactionComponents = kCapsuleReactionComponents;
+        const long cs = pairs.stride();
+        // The run-time stride (kCapsuleReactionComponents on the CPU): GCC 12 vectorises a
+        // group of 9 stores at a constant stride only by permutes it does not have (not a power
+        // of 2), but stores at an unknown stride element by element.
+        const long r0 = p * pairs.reactionPairStride;
+        double* h = pairs.history;
+        double* out = pairs.reaction;
+        const long hs = pairs.historyStride();
+        Vector3d history = load(h, p, hs);
+        const PointContactLoads loads =
+            pointContact(law, geometry.normal, geometry.overlap, geometry.offsetI, geometry.offsetJ,
+                         load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4), load(vw, 8 * j + 4),
+                         history, ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
+        double value[3 * kHistoryVectors + kReactionComponents];
+        for (int c = 0; c < 3; ++c)
+        {
+            value[c] = touching ? history[c] : 0.0;
+            value[3 + c] = touching ? loads.forceOnI[c] : 0.0;
+            value[6 + c] = touching ? loads.torqueOnI[c] : 0.0;
+            value[9 + c] = touching ? loads.torqueOnJ[c] : 0.0;
+        }
+        for (int c = 0; c < 3; ++c)
+            h[p + c * hs] = value[c];
+        for (int c = 0; c < kReactionComponents; ++c)
+            out[r0 + c * cs] = value[3 + c];
+    }
 };
 
 //- Ends a step: per-grain loads (grainLoads: gravity, drag, fluid, walls), then the loads of
 //- the pairs the grain owns and of those it is partner of (fixed order: results do not depend
 //- on the thread count), the second half kick and, within a step() call, the next step's kick
-//- and drift in the same pass.
+//- and drift in the same pass. Capsules (coreHalfLength > 0, free) rotate in the body frame:
+//- half kick of the global angular momentum L, free rotation at constant L (RigidBody.h),
+//- omega = R I^-1 R^T L; spheres as always (omega += dt/2 T / I).
+template <class Shapes, class WallLaw>
 struct GatherKick
 {
     GrainView g;
     PairView pairs;
-    GrainForceKernel grainLoads;
+    GrainForceKernel<Shapes, WallLaw> grainLoads;
     double dt;
     bool driftNext; //!< false: last step of the call, update the SoA fields
 
     DEM_HD double operator()(int j) const
     {
-        grainLoads.prefetchWallState(j + GrainForceKernel::kWallPrefetchDistance);
+        grainLoads.prefetchWallState(j + GrainForceKernel<Shapes, WallLaw>::kWallPrefetchDistance);
         Vector3d force, torque;
         grainLoads.add(j, force, torque);
         // Pairs j owns, then pairs j is the partner of (open pairs hold zero loads), in one
@@ -228,11 +407,19 @@ struct GatherKick
         {
             const bool own = k < owned;
             const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
-            const double* loads = pairs.reactionOf<kSphereReactionComponents>(p);
+            const double* loads = pairs.template reactionOf<Shapes::kReactionComponents>(p);
             const double sign = own ? 1.0 : -1.0;
-            const double lever = loads[(own ? 6 : 7) * cs];
             force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);
-            torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+            if constexpr (Shapes::kCapsules)
+            {
+                const double* t = loads + (own ? 3 : 6) * cs;
+                torque += Vector3d(t[0], t[cs], t[2 * cs]);
+            }
+            else
+            {
+                const double lever = loads[(own ? 6 : 7) * cs];
+                torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+            }
         }
         const int flag = g.flag[j];
         if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
@@ -240,6 +427,9 @@ struct GatherKick
         double* vw = g.packedVelocities + 8L * j;
         double* xr = g.packedPositionRadius + 4L * j;
         Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        if constexpr (Shapes::kCapsules)
+            if (g.coreHalfLength[j] > 0.0)
+                return capsuleKickDrift(j, flag, force, torque, v, omega, vw, xr);
         kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         if (!driftNext)
         {
@@ -263,6 +453,41 @@ struct GatherKick
         }
         const double* b = g.packedPositionAtBuild + 4L * j;
         return movedOrInfinity((x - Vector3d(b[0], b[1], b[2])).squaredNorm());
+    }
+
+    //- The same for a capsule: translation as a sphere's, rotation from the global angular
+    //- momentum (GrainView::angularMomentum and orientation are its state during a call).
+    DEM_HD double capsuleKickDrift(int j, int flag, const Vector3d& force, const Vector3d& torque,
+                                   Vector3d& v, Vector3d& omega, double* vw, double* xr) const
+    {
+        Quaterniond q = g.orientationOf(j);
+        const Vector3d inertia = g.principalInertia(j);
+        Vector3d L = g.angularMomentum(j);
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        kickRotation(flag, 0.5 * dt, torque, q, inertia, L, omega);
+        if (!driftNext)
+        {
+            g.force.store(j, force);
+            g.torque.store(j, torque);
+            g.velocity.store(j, v);
+            g.angularVelocity.store(j, omega);
+            g.angularMomentum.store(j, L);
+            g.position.store(j, Vector3d(xr[0], xr[1], xr[2]));
+            g.pack(j);
+            return movedOrInfinity(0.0 * (v.squaredNorm() + L.squaredNorm()));
+        }
+        kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        kickRotation(flag, 0.5 * dt, torque, q, inertia, L, omega);
+        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
+        rotate(g, j, flag, dt, inertia, L, q, omega);
+        g.angularMomentum.store(j, L);
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = x[c];
+            vw[c] = v[c];
+            vw[4 + c] = omega[c];
+        }
+        return movedOrInfinity(endsMoved2(g, j, x));
     }
 };
 

@@ -72,6 +72,7 @@ struct GrainView
     double* coreHalfLength = nullptr;
     double* orientation = nullptr;
     Vec3Array principalInertia, angularMomentum;
+    Vec3Array halfAxisAtBuild; //!< a at the last rebuild (systems with capsules)
     //- Per grain kMaxWalls records of kWallRecord (wallRecordOf). Together per grain, not one
     //- array per component: the grains touching a wall are scattered through the cell-sorted
     //- order, and this way each costs one cache line.
@@ -87,9 +88,8 @@ struct GrainView
     double* packedVelocities = nullptr;
     double* packedPositionAtBuild = nullptr;
     //- Systems with capsules only (else nullptr): the half-axis vector a = h R(q) e_z (ax, ay,
-    //- az, 0), now and at the last rebuild (the skin check counts the ends' motion).
+    //- az, 0), read by the pair kernel beside the packed position.
     double* packedHalfAxis = nullptr;
-    double* packedHalfAxisAtBuild = nullptr;
 
     DEM_HD Quaterniond orientationOf(long i) const
     {
@@ -134,6 +134,8 @@ struct GrainView
         xr[3] = radius[i];
         vw[3] = inverseMass[i];
         vw[7] = inverseInertia[i];
+        if (packedHalfAxis)
+            packHalfAxis(i);
     }
     DEM_HD Vector3d packedPosition(int i) const
     {
