@@ -25,12 +25,14 @@ void usage()
 {
     std::cerr << "usage: demBench --packing FILE [--relax-steps 1000] [--steps 2000] "
                  "[--threads T] [--backend auto|cpu|cuda] [--skin 1e-5] [--replicate NXxNY]\n"
-                 "                [--shape sphere|capsule] [--aspect 3] [--seed 1]\n"
+                 "                [--shape sphere|capsule] [--aspect 3] [--seed 1] "
+                 "[--write-packing FILE]\n"
                  "--replicate 10x1: NX x NY copies of the periodic packing side by side, "
                  "box NX L x NY L\n"
                  "--shape capsule: the packing's grains as capsules of the same volume and "
                  "aspect ratio (L + 2r) / (2r), random orientations (--seed), relaxed with soft "
-                 "contacts stiffened stage by stage (untimed)\n";
+                 "contacts stiffened stage by stage (untimed); --write-packing saves it "
+                 "(x y z r h qw qx qy qz per capsule) for --packing\n";
 }
 
 //- "NXxNY" (e.g. 10x1) as two positive counts.
@@ -93,7 +95,7 @@ int main(int argc, char** argv)
     double skin = 1e-5, friction = 0.5;
     dem::Backend backend = dem::Backend::automatic;
     std::pair<int, int> copies{1, 1};
-    std::string shape = "sphere";
+    std::string shape = "sphere", writeFile;
     dem::CapsulePackingSettings capsules;
     try
     {
@@ -128,6 +130,8 @@ int main(int argc, char** argv)
             }
             else if (arg == "--aspect")
                 capsules.aspect = std::stod(value());
+            else if (arg == "--write-packing")
+                writeFile = value();
             else if (arg == "--seed")
                 capsules.seed = unsigned(std::stoul(value()));
             else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
@@ -165,6 +169,17 @@ int main(int argc, char** argv)
         const double drag = 612.0;
         if (shape == "capsule")
             packing = dem::capsulePacking(packing, p, drag, capsules);
+        if (!writeFile.empty())
+            dem::writePacking(writeFile, packing);
+        // The shape of the grains timed (a capsule packing may come from the file)
+        double aspect = 1.0;
+        for (const dem::GrainInit& g : packing.grains)
+            if (g.coreHalfLength > 0.0)
+            {
+                shape = "capsule";
+                aspect = (g.coreHalfLength + g.radius) / g.radius;
+                break;
+            }
         double interior;
         const double bed = dem::bedSolidFraction(packing, interior);
 
@@ -180,9 +195,8 @@ int main(int argc, char** argv)
                     "(0.05 < z < 0.30 m)\n",
                     packingFile.c_str(), copies.first, copies.second, n, packing.length, p.timeStep,
                     skin, system.backendName().c_str(), system.threadCount(),
-                    shape == "capsule"
-                        ? ("capsules of aspect " + std::to_string(capsules.aspect)).c_str()
-                        : "spheres",
+                    shape == "capsule" ? ("capsules of aspect " + std::to_string(aspect)).c_str()
+                                       : "spheres",
                     bed, interior);
 
         system.setViscousDrag(drag);
@@ -207,7 +221,7 @@ int main(int argc, char** argv)
         std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
                     "contacts_per_grain=%.4f shape=%s aspect=%g\n",
                     rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain,
-                    shape.c_str(), shape == "capsule" ? capsules.aspect : 1.0);
+                    shape.c_str(), aspect);
         return 0;
     }
     catch (const std::exception& e)
