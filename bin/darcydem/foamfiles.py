@@ -82,10 +82,37 @@ def read_vtp(path):
     return out
 
 
-def grain_files(case):
+def grain_files(case, series_name="grains"):
     """(time, path) of the grains' .vtp files in the order of the VTK file
-    series <case>/VTK/grains.vtp.series (JSON) that ParaView opens."""
-    series = os.path.join(case, "VTK", "grains.vtp.series")
+    series <case>/VTK/grains.vtp.series (JSON) that ParaView opens
+    (series_name "capsules": the grains' surfaces, capsules_<time>.vtp)."""
+    series = os.path.join(case, "VTK", series_name + ".vtp.series")
     with open(series) as f:
         entries = json.load(f)["files"]
     return [(e["time"], os.path.join(os.path.dirname(series), e["name"])) for e in entries]
+
+
+def read_grains(path):
+    """A grains file (<time>/grains) as {"position" (n, 3), "radius" (n,),
+    "coreHalfLength" (n,), "orientation" (n, 4) (w x y z), "velocity"
+    (n, 3)}: sphere lines 'x y z r [vx vy vz]' (h = 0, q = 1), capsule lines
+    'x y z r h qw qx qy qz [vx vy vz]'."""
+    rows = [[float(v) for v in line.split()] for line in open(path)
+            if line.strip() and not line.lstrip().startswith("#")]
+    out = {k: [] for k in ("position", "radius", "coreHalfLength", "orientation", "velocity")}
+    for v in rows:
+        if len(v) not in (4, 7, 9, 12):
+            raise ValueError(f"{path}: a line of {len(v)} columns")
+        capsule = len(v) in (9, 12)
+        out["position"].append(v[:3])
+        out["radius"].append(v[3])
+        out["coreHalfLength"].append(v[4] if capsule else 0.0)
+        out["orientation"].append(v[5:9] if capsule else [1.0, 0.0, 0.0, 0.0])
+        out["velocity"].append(v[-3:] if len(v) in (7, 12) else [0.0, 0.0, 0.0])
+    return {k: np.array(v, dtype=float) for k, v in out.items()}
+
+
+def capsule_axes(q):
+    """Unit capsule axes R(q) e_z of quaternions q (n, 4), (w, x, y, z)."""
+    w, x, y, z = np.asarray(q, dtype=float).T
+    return np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], axis=1)

@@ -1,6 +1,7 @@
 // PackingFile.h
-// Reader of the benchmark packing files (src/dem/bench/packings): a header line
-// "# L Lz N", then one grain per line "x y z r" in metres.
+// Reader and writer of the benchmark packing files (src/dem/bench/packings): a header line
+// "# L Lz N", then one grain per line "x y z r" in metres; a capsule adds its core half-length
+// and orientation, "x y z r h qw qx qy qz" (demBench --shape capsule --write-packing).
 #pragma once
 
 #include "dem/Parameters.h"
@@ -20,5 +21,8 @@ struct Packing
 
 //- Throws dem::Error naming the file and line on any format problem.
 Packing readPacking(const std::string& path, double density);
+
+//- Full double precision (the equilibrium overlaps are ~1e-9 m).
+void writePacking(const std::string& path, const Packing& packing);
 
 } // namespace dem

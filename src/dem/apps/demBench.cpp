@@ -1,8 +1,11 @@
 // demBench.cpp
 // The standard DEM benchmark of src/dem/bench/README.md: a settled dense packing on a wall,
 // 1000 relaxation steps with a global drag of 612 N s/m, then exactly 2000 timed steps without
-// damping. The last line is machine-readable:
+// damping. --shape capsule --aspect A: the same with capsules made from the packing
+// (CapsulePacking.h). The last line is machine-readable:
 //   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>
+//   shape=<sphere|capsule> aspect=<number>
+#include "CapsulePacking.h"
 #include "PackingFile.h"
 #include "dem/System.h"
 
@@ -22,8 +25,14 @@ void usage()
 {
     std::cerr << "usage: demBench --packing FILE [--relax-steps 1000] [--steps 2000] "
                  "[--threads T] [--backend auto|cpu|cuda] [--skin 1e-5] [--replicate NXxNY]\n"
+                 "                [--shape sphere|capsule] [--aspect 3] [--seed 1] "
+                 "[--write-packing FILE]\n"
                  "--replicate 10x1: NX x NY copies of the periodic packing side by side, "
-                 "box NX L x NY L\n";
+                 "box NX L x NY L\n"
+                 "--shape capsule: the packing's grains as capsules of the same volume and "
+                 "aspect ratio (L + 2r) / (2r), random orientations (--seed), relaxed with soft "
+                 "contacts stiffened stage by stage (untimed); --write-packing saves it "
+                 "(x y z r h qw qx qy qz per capsule) for --packing\n";
 }
 
 //- "NXxNY" (e.g. 10x1) as two positive counts.
@@ -86,6 +95,8 @@ int main(int argc, char** argv)
     double skin = 1e-5, friction = 0.5;
     dem::Backend backend = dem::Backend::automatic;
     std::pair<int, int> copies{1, 1};
+    std::string shape = "sphere", writeFile;
+    dem::CapsulePackingSettings capsules;
     try
     {
         for (int a = 1; a < argc; ++a)
@@ -111,6 +122,18 @@ int main(int argc, char** argv)
                 skin = std::stod(value());
             else if (arg == "--replicate")
                 copies = parseReplicate(value());
+            else if (arg == "--shape")
+            {
+                shape = value();
+                if (shape != "sphere" && shape != "capsule")
+                    throw dem::Error("--shape '" + shape + "' (valid: sphere capsule)");
+            }
+            else if (arg == "--aspect")
+                capsules.aspect = std::stod(value());
+            else if (arg == "--write-packing")
+                writeFile = value();
+            else if (arg == "--seed")
+                capsules.seed = unsigned(std::stoul(value()));
             else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
                 friction = std::stod(value());
             else if (arg == "-h" || arg == "--help")
@@ -143,6 +166,23 @@ int main(int argc, char** argv)
         p.backend = backend;
         p.threads = threads;
 
+        const double drag = 612.0;
+        if (shape == "capsule")
+            packing = dem::capsulePacking(packing, p, drag, capsules);
+        if (!writeFile.empty())
+            dem::writePacking(writeFile, packing);
+        // The shape of the grains timed (a capsule packing may come from the file)
+        double aspect = 1.0;
+        for (const dem::GrainInit& g : packing.grains)
+            if (g.coreHalfLength > 0.0)
+            {
+                shape = "capsule";
+                aspect = (g.coreHalfLength + g.radius) / g.radius;
+                break;
+            }
+        double interior;
+        const double bed = dem::bedSolidFraction(packing, interior);
+
         dem::System system(p);
         system.addGrains(packing.grains);
         dem::WallSpec bottom;
@@ -151,11 +191,15 @@ int main(int argc, char** argv)
         system.addWall(bottom);
         const long n = long(system.grainCount());
         std::printf("demBench: %s x %dx%d, N = %ld, L = %g m, dt = %g s, skin = %g m, "
-                    "backend %s, %d thread(s)\n",
+                    "backend %s, %d thread(s), %s, solid fraction %.3f (bed) / %.3f "
+                    "(0.05 < z < 0.30 m)\n",
                     packingFile.c_str(), copies.first, copies.second, n, packing.length, p.timeStep,
-                    skin, system.backendName().c_str(), system.threadCount());
+                    skin, system.backendName().c_str(), system.threadCount(),
+                    shape == "capsule" ? ("capsules of aspect " + std::to_string(aspect)).c_str()
+                                       : "spheres",
+                    bed, interior);
 
-        system.setViscousDrag(612.0);
+        system.setViscousDrag(drag);
         system.step(relaxSteps);
         system.setViscousDrag(0.0);
         const std::size_t rebuildsBefore = system.neighbourRebuildCount();
@@ -175,8 +219,9 @@ int main(int argc, char** argv)
         std::printf("timed phase used %.4f s of CPU time (%.3g particle-steps per CPU-second)\n",
                     cpuSeconds, double(n) * steps / cpuSeconds);
         std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
-                    "contacts_per_grain=%.4f\n",
-                    rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain);
+                    "contacts_per_grain=%.4f shape=%s aspect=%g\n",
+                    rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain,
+                    shape.c_str(), aspect);
         return 0;
     }
     catch (const std::exception& e)

@@ -51,6 +51,7 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
     topWall_(-1),
     topWall0_(0),
     asciiOutput_(false),
+    surfaceOutput_(true),
     simStart_(mesh.time().value()),
     particleSteps_(0),
     stepSeconds_(0)
@@ -71,6 +72,11 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
                 << exit(FatalIOError);
         }
         asciiOutput_ = (format == "ascii");
+        surfaceOutput_ =
+            properties_.subDict("output").getOrDefault<bool>
+            (
+                "capsuleSurfaces", true
+            );
     }
 
     const fileName statePath(mesh.time().timePath()/"demState");

@@ -10,6 +10,7 @@
 #include "demStateFile.H"
 #include "grainStartState.H"
 #include "grainsFile.H"
+#include "contactLaw.H"
 #include "Enum.H"
 
 #include <sstream>
@@ -47,37 +48,6 @@ static const Enum<dem::GrainFlag> grainFlagNames
     { dem::GrainFlag::translationOnly, "translationOnly" },
 });
 
-
-//- A contact law from its dictionary; every entry checked
-static dem::ContactMaterial readContact(const dictionary& dict)
-{
-    dem::ContactMaterial m;
-    m.normalStiffness = inputChecks::getPositive(dict, "normalStiffness");
-    m.tangentialStiffness = dict.getOrDefault<scalar>("tangentialStiffness", 0);
-    m.normalDamping = dict.getOrDefault<scalar>("normalDamping", 0);
-    m.tangentialDamping = dict.getOrDefault<scalar>("tangentialDamping", 0);
-    m.friction = dict.getOrDefault<scalar>("friction", 0);
-
-    const std::pair<const char*, scalar> nonNegative[] =
-    {
-        {"tangentialStiffness", m.tangentialStiffness},
-        {"normalDamping", m.normalDamping},
-        {"tangentialDamping", m.tangentialDamping},
-        {"friction", m.friction},
-    };
-    for (const auto& entry : nonNegative)
-    {
-        if (entry.second < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << entry.first << "' in " << dict.name()
-                << " must be >= 0, found " << entry.second << nl
-                << exit(FatalIOError);
-        }
-    }
-    return m;
-}
-
 } // End namespace Foam
 
 
@@ -99,10 +69,12 @@ dem::Parameters Foam::demCloud::readParameters() const
     const vector g(dict.get<vector>("gravity"));
     p.gravity = {g.x(), g.y(), g.z()};
 
-    p.grainGrain = readContact(dict.subDict("contact"));
+    // One run-time selected law each; grain-wall contacts default to the
+    // grain-grain law
+    p.grainGrain = contactLaw::New(dict.subDict("contact"))->material();
     p.grainWall =
         dict.found("wallContact")
-      ? readContact(dict.subDict("wallContact"))
+      ? contactLaw::New(dict.subDict("wallContact"))->material()
       : p.grainGrain;
 
     // The periodic box is the mesh's horizontal extent
@@ -200,6 +172,7 @@ void Foam::demCloud::addGrainsFromFile()
         mesh_.time().timePath()/"grains", properties_, grid_.grid(), wallSpecs_
     );
     system_->addGrains(start.grains());
+    start.checkOverlaps(*system_);
     Info<< "    " << start.grains().size() << " grains from "
         << mesh_.time().timePath()/"grains" << endl;
     applyGrainFlags();

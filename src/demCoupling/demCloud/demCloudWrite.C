@@ -54,6 +54,21 @@ bool Foam::demCloud::writeObject
         vtp,
         readScalar(runTime.timeName())
     );
+    // Capsules drawn as such: their surfaces beside the grains
+    if (surfaceOutput_ && grainVtkWriter::hasCapsules(g))
+    {
+        const fileName surfaces
+        (
+            vtkDir/("capsules_" + runTime.timeName() + ".vtp")
+        );
+        grainVtkWriter::writeSurfaceVtp(surfaces, g, asciiOutput_);
+        grainVtkWriter::writeSeries
+        (
+            vtkDir/"capsules.vtp.series",
+            surfaces,
+            readScalar(runTime.timeName())
+        );
+    }
 
     return true;
 }

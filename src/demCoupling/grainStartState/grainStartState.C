@@ -7,7 +7,6 @@
 #include "grainsFile.H"
 #include "error.H"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -39,11 +38,22 @@ Foam::grainStartState::grainStartState
     const std::vector<dem::WallSpec>& walls
 )
 :
-    path_(path)
+    path_(path),
+    demProperties_(demProperties),
+    maxOverlap_
+    (
+        demProperties.getOrDefault<scalar>("maxInitialOverlap", 0.05)
+    )
 {
+    if (!(maxOverlap_ >= 0))
+    {
+        FatalIOErrorInFunction(demProperties)
+            << "Entry 'maxInitialOverlap' in " << demProperties.name()
+            << " must be >= 0 (a fraction of the smaller radius), found "
+            << maxOverlap_ << nl << exit(FatalIOError);
+    }
     grains_ = grainsFile(path).read(lines_);
     checkPlacement(demProperties, mesh, walls);
-    checkOverlaps(demProperties, mesh);
 }
 
 
@@ -132,156 +142,41 @@ void Foam::grainStartState::checkPlacement
 }
 
 
-void Foam::grainStartState::checkOverlaps
-(
-    const dictionary& demProperties,
-    const dem::UniformGrid& mesh
-) const
+void Foam::grainStartState::checkOverlaps(const dem::System& system) const
 {
-    const scalar allowed =
-        demProperties.getOrDefault<scalar>("maxInitialOverlap", 0.05);
-    if (!(allowed >= 0))
+    if (system.grainCount() != grains_.size())
     {
-        FatalIOErrorInFunction(demProperties)
-            << "Entry 'maxInitialOverlap' in " << demProperties.name()
-            << " must be >= 0 (a fraction of the smaller radius), found "
-            << allowed << nl << exit(FatalIOError);
+        FatalErrorInFunction
+            << "The overlap check needs exactly the grains of " << path_
+            << " in the DEM system (" << label(grains_.size()) << "), found "
+            << label(system.grainCount()) << nl << exit(FatalError);
     }
 
-    const label n = grains_.size();
-    scalar rMax = 0;
-    for (const dem::GrainInit& g : grains_)
+    // The real shapes (capsules by their cores' closest points), through the
+    // library's own neighbour search
+    const dem::GrainOverlap worst(system.largestOverlap());
+    if (worst.first < 0 || !(worst.relativeOverlap > maxOverlap_))
     {
-        rMax = max(rMax, g.radius);
+        return;
     }
 
-    // Cells at least one largest diameter wide: overlapping grains lie in
-    // the same or neighbouring cells. At most about n cells in all.
-    scalar length[3];
-    label cells[3];
-    scalar size = 2*rMax;
-    for (;;)
-    {
-        scalar total = 1;
-        for (int d = 0; d < 3; ++d)
-        {
-            length[d] = mesh.n[d]*mesh.spacing[d];
-            cells[d] = max(label(1), label(std::floor(length[d]/size)));
-            total *= cells[d];
-        }
-        if (total <= 2*n + 8)
-        {
-            break;
-        }
-        size *= 1.5;
-    }
-
-    const auto cellOf = [&](const size_t i, const int d) -> label
-    {
-        const scalar s = (grains_[i].position[d] - mesh.origin[d])/length[d];
-        return min(max(label(std::floor(s*cells[d])), label(0)), cells[d] - 1);
-    };
-    const auto indexOf = [&](const label cx, const label cy, const label cz)
-    {
-        return cx + cells[0]*(cy + cells[1]*cz);
-    };
-
-    // Grains sorted by cell: start[c] .. start[c + 1] in 'order'
-    std::vector<label> cellOfGrain(n), start(cells[0]*cells[1]*cells[2] + 1, 0);
-    for (label i = 0; i < n; ++i)
-    {
-        cellOfGrain[i] = indexOf(cellOf(i, 0), cellOf(i, 1), cellOf(i, 2));
-        ++start[cellOfGrain[i] + 1];
-    }
-    for (size_t c = 1; c < start.size(); ++c)
-    {
-        start[c] += start[c - 1];
-    }
-    std::vector<label> order(n), fill(start.begin(), start.end() - 1);
-    for (label i = 0; i < n; ++i)
-    {
-        order[fill[cellOfGrain[i]]++] = i;
-    }
-
-    label worstI = -1, worstJ = -1, count = 0;
-    scalar worst = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        const label c[3] = {cellOf(i, 0), cellOf(i, 1), cellOf(i, 2)};
-        // Neighbouring cells, each once (a box of one or two cells wraps
-        // onto itself)
-        std::vector<label> visited;
-        for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-            const label cz = c[2] + dz;
-            if (cz < 0 || cz >= cells[2])
-            {
-                continue;
-            }
-            const label cx = (c[0] + dx + cells[0]) % cells[0];
-            const label cy = (c[1] + dy + cells[1]) % cells[1];
-            const label cell = indexOf(cx, cy, cz);
-            if (std::find(visited.begin(), visited.end(), cell) != visited.end())
-            {
-                continue;
-            }
-            visited.push_back(cell);
-
-            for (label k = start[cell]; k < start[cell + 1]; ++k)
-            {
-                const label j = order[k];
-                if (j <= i)
-                {
-                    continue;
-                }
-                scalar distance2 = 0;
-                for (int d = 0; d < 3; ++d)
-                {
-                    scalar s = grains_[j].position[d] - grains_[i].position[d];
-                    if (d < 2)
-                    {
-                        s -= length[d]*std::round(s/length[d]);
-                    }
-                    distance2 += s*s;
-                }
-                const scalar rI = grains_[i].radius, rJ = grains_[j].radius;
-                const scalar overlap = rI + rJ - std::sqrt(distance2);
-                const scalar fraction = overlap/min(rI, rJ);
-                if (fraction > allowed)
-                {
-                    ++count;
-                    if (fraction > worst)
-                    {
-                        worst = fraction;
-                        worstI = i;
-                        worstJ = j;
-                    }
-                }
-            }
-        }
-    }
-
-    if (count)
-    {
-        const scalar distance =
-            grains_[worstI].radius + grains_[worstJ].radius
-          - worst*min(grains_[worstI].radius, grains_[worstJ].radius);
-        FatalIOErrorInFunction(demProperties)
-            << path_ << ": " << count << " pair(s) of grains overlap by more"
-            << " than maxInitialOverlap = " << num(allowed).c_str() << " of"
-            << " the smaller radius. The worst: " << nl << "    "
-            << describe(worstI).c_str() << nl << "    "
-            << describe(worstJ).c_str() << nl << "    "
-            << (distance <= SMALL*grains_[worstI].radius ? "coincident, " : "")
-            << "overlap " << num(100*worst).c_str()
-            << " % of the smaller radius" << nl
-            << "Such an overlap stores elastic energy k delta^2/2 far above a"
-            << " settled packing's; remove the duplicate or spread the grains"
-            << " (bin/makeGrains), or raise maxInitialOverlap in "
-            << demProperties.name() << nl << exit(FatalIOError);
-    }
+    const dem::GrainInit& a = grains_[worst.first];
+    const dem::GrainInit& b = grains_[worst.second];
+    // Overlap r_a + r_b: the centres (spheres) or cores (capsules) meet
+    const bool coincident =
+        worst.overlap >= a.radius + b.radius - SMALL*min(a.radius, b.radius);
+    FatalIOErrorInFunction(demProperties_)
+        << path_ << ": grains overlap by more than maxInitialOverlap = "
+        << num(maxOverlap_).c_str() << " of the smaller radius. The worst:"
+        << nl << "    " << describe(worst.first).c_str() << nl << "    "
+        << describe(worst.second).c_str() << nl << "    "
+        << (coincident ? "coincident, " : "")
+        << "overlap " << num(100*worst.relativeOverlap).c_str()
+        << " % of the smaller radius" << nl
+        << "Such an overlap stores elastic energy k delta^2/2 far above a"
+        << " settled packing's; remove the duplicate or spread the grains"
+        << " (bin/makeGrains), or raise maxInitialOverlap in "
+        << demProperties_.name() << nl << exit(FatalIOError);
 }
 
 

@@ -7,6 +7,7 @@
 #include "atomicFile.H"
 #include "error.H"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -31,6 +32,33 @@ Foam::grainsFile::grainsFile(const fileName& path)
 :
     path_(path)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+std::array<double, 4> Foam::grainsFile::orientation
+(
+    const double w,
+    const double x,
+    const double y,
+    const double z,
+    const label lineNo,
+    const std::string& line
+) const
+{
+    // Written by hand with four or five digits a unit quaternion is off by
+    // about 1e-4; a larger error is a slip (a wrong column), not round-off
+    const double norm = std::sqrt(w*w + x*x + y*y + z*z);
+    if (!(std::abs(norm - 1) <= quaternionTolerance))
+    {
+        FatalErrorInFunction
+            << path_ << " line " << lineNo << ": the orientation 'qw qx qy"
+            << " qz' (columns 6 to 9) must be a unit quaternion (|q| within "
+            << quaternionTolerance << " of 1), |q| = " << norm << " in '"
+            << line << "'" << nl << exit(FatalError);
+    }
+    return {w/norm, x/norm, y/norm, z/norm};
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -66,7 +94,8 @@ std::vector<dem::GrainInit> Foam::grainsFile::read
         {
             continue;
         }
-        // x y z r, optionally followed by the velocity vx vy vz
+        // Sphere: x y z r; capsule: x y z r h qw qx qy qz; either
+        // optionally followed by the velocity vx vy vz
         std::istringstream ls(line);
         std::vector<double> v;
         double value;
@@ -74,19 +103,40 @@ std::vector<dem::GrainInit> Foam::grainsFile::read
         {
             v.push_back(value);
         }
-        if (!ls.eof() || (v.size() != 4 && v.size() != 7) || !(v[3] > 0))
+        const bool capsule = v.size() == 9 || v.size() == 12;
+        if
+        (
+            !ls.eof()
+         || (v.size() != 4 && v.size() != 7 && !capsule)
+         || !(v[3] > 0 && std::isfinite(v[3]))
+        )
         {
             FatalErrorInFunction
-                << path_ << " line " << lineNo << ": expected 'x y z r' or"
-                << " 'x y z r vx vy vz' with r > 0, found '" << line << "'"
-                << nl << exit(FatalError);
+                << path_ << " line " << lineNo << ": expected 'x y z r' (a"
+                << " sphere) or 'x y z r h qw qx qy qz' (a capsule: core"
+                << " half-length h, orientation quaternion), either"
+                << " optionally followed by 'vx vy vz', with r > 0; found '"
+                << line << "'" << nl << exit(FatalError);
         }
         dem::GrainInit g;
         g.position = {v[0], v[1], v[2]};
         g.radius = v[3];
-        if (v.size() == 7)
+        if (capsule)
         {
-            g.velocity = {v[4], v[5], v[6]};
+            g.coreHalfLength = v[4];
+            g.orientation = orientation(v[5], v[6], v[7], v[8], lineNo, line);
+            if (!(g.coreHalfLength >= 0 && std::isfinite(g.coreHalfLength)))
+            {
+                FatalErrorInFunction
+                    << path_ << " line " << lineNo << ": the core half-length"
+                    << " h (5th column) must be >= 0, found '" << line << "'"
+                    << nl << exit(FatalError);
+            }
+        }
+        if (v.size() == 7 || v.size() == 12)
+        {
+            const size_t k = v.size() - 3;
+            g.velocity = {v[k], v[k + 1], v[k + 2]};
         }
         grains.push_back(g);
         lines.push_back(lineNo);
@@ -120,13 +170,26 @@ void Foam::grainsFile::write(const dem::GrainData& g) const
     {
         std::ofstream os(file.tmpPath());
         os.precision(17);
-        os  << "# darcyDem grains: x y z r [m], one grain per line (written"
-            << " at a write time; demState beside it holds the complete"
-            << " state)\n";
+        os  << "# darcyDem grains, one per line: a sphere 'x y z r' [m], a"
+            << " capsule 'x y z r h qw qx qy qz' (h: core half-length [m],"
+            << " q: orientation, body z axis = capsule axis); written at a"
+            << " write time, demState beside it holds the complete state\n";
         for (size_t i = 0; i < g.radius.size(); ++i)
         {
             os  << g.position[3*i] << ' ' << g.position[3*i + 1] << ' '
-                << g.position[3*i + 2] << ' ' << g.radius[i] << '\n';
+                << g.position[3*i + 2] << ' ' << g.radius[i];
+            // A sphere's line stays as it always was
+            const double h =
+                g.coreHalfLength.empty() ? 0 : g.coreHalfLength[i];
+            if (h > 0)
+            {
+                os  << ' ' << h;
+                for (int k = 0; k < 4; ++k)
+                {
+                    os  << ' ' << g.orientation[4*i + k];
+                }
+            }
+            os  << '\n';
         }
         os.close();
         if (!os)

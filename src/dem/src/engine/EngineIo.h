@@ -242,6 +242,7 @@ GrainData EngineImpl<Exec>::grains() const
         Exec::forEach(
             n, FluidForceOnGrains{e.grains_.vec3(fPosition),
                                   e.grains_.real(fRadius),
+                                  e.grains_.real(fCoreHalfLength),
                                   fluid,
                                   {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
                                   Vec3Array{thrust::raw_pointer_cast(fluidForce.data()), n}});
@@ -350,6 +351,7 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
     solid.resize(cells);
     momentum.resize(meanVelocity ? 3 * cells : 0);
     phi.resize(cells);
+    const bool capsules = grains_.hasCapsules(); // else the sphere-only deposit
     auto depositAt = [&](double lookAhead, bool withVelocity)
     {
         thrust::fill(exec_.policy(), solid.begin(), solid.end(), 0.0);
@@ -357,7 +359,9 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
             thrust::fill(exec_.policy(), momentum.begin(), momentum.end(), 0.0);
         Exec::forEachScatter(
             n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
-                             e.grains_.real(fRadius), g, lookAhead,
+                             e.grains_.real(fRadius),
+                             capsules ? e.grains_.real(fCoreHalfLength) : nullptr,
+                             e.grains_.real(fOrientation), g, lookAhead,
                              thrust::raw_pointer_cast(solid.data()),
                              withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr});
         Exec::forEach(

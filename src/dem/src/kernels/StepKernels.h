@@ -15,6 +15,7 @@
 #include "kernels/SnowContact.h"
 #include "kernels/TrilinearWeights.h"
 #include "kernels/Views.h"
+#include "kernels/VolumeSpread.h"
 
 namespace dem
 {
@@ -23,8 +24,10 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-//- The pore fluid's force on a grain (Damsgaard et al. 2015, eq. 12): f = -V grad p(x) -
-//- rho_f V g, grad p interpolated with the deposit's trilinear weights.
+//- The pore fluid's force on a grain of solid volume V (grainVolume: a capsule's true volume)
+//- (Damsgaard et al. 2015, eq. 12): f = -V grad p(x) - rho_f V g, grad p interpolated at the
+//- centre x with the deposit's trilinear weights. It acts at the centre: no torque, also for a
+//- capsule in a gradient that varies along its axis (doc/EQUATIONS.md 7).
 struct FluidView
 {
     bool active = false;
@@ -32,11 +35,10 @@ struct FluidView
     const double* gradP = nullptr; //!< 3 per cell interleaved
     double density = 0;
 
-    DEM_HD Vector3d force(const Vector3d& x, double r, const Vector3d& gvec) const
+    DEM_HD Vector3d force(const Vector3d& x, double volume, const Vector3d& gvec) const
     {
         if (!active)
             return Vector3d::Zero();
-        const double volume = 4.18879020478639098 * r * r * r; // 4/3 pi r^3
         return -volume * (interpolateVector(grid, gradP, x) + density * gvec);
     }
 };
@@ -46,14 +48,16 @@ struct FluidForceOnGrains
 {
     Vec3Array position;
     const double* radius;
+    const double* coreHalfLength; //!< nullptr: every grain is a sphere
     FluidView fluid;
     double gravity[3];
     Vec3Array out;
 
     DEM_HD void operator()(int i) const
     {
-        out.store(
-            i, fluid.force(position(i), radius[i], Vector3d(gravity[0], gravity[1], gravity[2])));
+        const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
+        out.store(i,
+                  fluid.force(position(i), volume, Vector3d(gravity[0], gravity[1], gravity[2])));
     }
 };
 
@@ -151,7 +155,9 @@ struct GrainForceKernel
         const double mass = 1.0 / g.packedVelocities[8L * i + 3];
         force = mass * gvec - drag * v; // m g - c v
         torque = Vector3d::Zero();
-        force += fluid.force(x, r, gvec);
+        if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
+            force +=
+                fluid.force(x, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
         if constexpr (Shapes::kCapsules)
             addEndContacts(i, x, v, omega, r, force, torque);
         else

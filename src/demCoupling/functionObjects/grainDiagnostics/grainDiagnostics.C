@@ -9,6 +9,46 @@
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Rotational kinetic energy of capsule i, (I_axial w_a^2 + I_perp w_p^2)/2
+//- with w_a, w_p the angular velocity along and across its axis and the
+//- capsule's principal moments (cylinder of length L = 2h plus a sphere
+//- split into the two caps, parallel-axis shifted), density m/V
+Foam::scalar capsuleRotationalEnergy(const dem::GrainData& g, const size_t i)
+{
+    using namespace Foam;
+    const scalar r = g.radius[i], L = 2*g.coreHalfLength[i];
+    const scalar rho = g.mass[i]/g.volume[i];
+    const scalar pi = constant::mathematical::pi;
+    const scalar mCore = rho*pi*r*r*L;
+    const scalar mCaps = rho*4.0/3.0*pi*pow3(r);
+    const scalar axial = mCore*r*r/2 + 2*mCaps*r*r/5;
+    const scalar across =
+        mCore*(L*L/12 + r*r/4) + mCaps*(2*r*r/5 + L*L/4 + 3*L*r/8);
+
+    const double* q = &g.orientation[4*i];
+    const vector axis
+    (
+        2*(q[1]*q[3] + q[0]*q[2]),
+        2*(q[2]*q[3] - q[0]*q[1]),
+        1 - 2*(q[1]*q[1] + q[2]*q[2])
+    );
+    const vector w
+    (
+        g.angularVelocity[3*i], g.angularVelocity[3*i + 1],
+        g.angularVelocity[3*i + 2]
+    );
+    const scalar wAxial = w & axis;
+    return 0.5*(axial*sqr(wAxial) + across*(magSqr(w) - sqr(wAxial)));
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -115,8 +155,18 @@ bool Foam::functionObjects::grainDiagnostics::write()
                     v2 += sqr(g.velocity[3*i + d]);
                     w2 += sqr(g.angularVelocity[3*i + d]);
                 }
-                kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
-                grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
+                const scalar h =
+                    g.coreHalfLength.empty() ? 0 : g.coreHalfLength[i];
+                if (h > 0)
+                {
+                    kinetic += 0.5*m*v2 + capsuleRotationalEnergy(g, i);
+                    grainVolume += g.volume[i];
+                }
+                else
+                {
+                    kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
+                    grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
+                }
                 if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
                 {
                     shiftX += g.displacement[3*i];
