@@ -72,11 +72,17 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
                 << exit(FatalIOError);
         }
         asciiOutput_ = (format == "ascii");
+    }
+    // Surfaces cost about 2.4 kB per grain and write time: by default only for runs small
+    // enough to look at grain by grain (1e5 capsules would write 236 MB per time).
+    const label maxDefaultSurfaceGrains = 20000;
+    const bool surfaceChoiceGiven =
+        properties_.found("output")
+     && properties_.subDict("output").found("capsuleSurfaces");
+    if (surfaceChoiceGiven)
+    {
         surfaceOutput_ =
-            properties_.subDict("output").getOrDefault<bool>
-            (
-                "capsuleSurfaces", true
-            );
+            properties_.subDict("output").get<bool>("capsuleSurfaces");
     }
 
     const fileName statePath(mesh.time().timePath()/"demState");
@@ -107,6 +113,18 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             if (displacement0_.empty())
             {
                 displacement0_.assign(3*system_->grainCount(), 0.0);
+            }
+            if
+            (
+                !surfaceChoiceGiven
+             && label(system_->grainCount()) > maxDefaultSurfaceGrains
+            )
+            {
+                surfaceOutput_ = false;
+                Info<< "    capsule surfaces (VTK/capsules_<time>.vtp) not written: "
+                    << system_->grainCount() << " grains > "
+                    << maxDefaultSurfaceGrains
+                    << "; output { capsuleSurfaces yes; } writes them" << endl;
             }
         }
     );
