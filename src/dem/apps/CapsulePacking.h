@@ -26,7 +26,7 @@ struct CapsulePackingSettings
     //- First stage: growthRuns damped runs of growthSteps, each after growing the capsules by
     //- an equal factor to full size, a lightly damped run in which the bed (raised by the
     //- growth) settles, then the quenched runs of every stage.
-    int growthRuns = 8, growthSteps = 250, settleSteps = 2000, runSteps = 400, runsPerStage = 2;
+    int growthRuns = 8, growthSteps = 250, settleSteps = 2000, runSteps = 2500, runsPerStage = 1;
     double settleDragFraction = 0.05;
 };
 
