@@ -6,6 +6,7 @@
 #include "dem/System.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -50,11 +51,19 @@ double volumeOf(const GrainInit& g)
     return M_PI * g.radius * g.radius * (2.0 * g.coreHalfLength + 4.0 / 3.0 * g.radius);
 }
 
-//- steps steps at stiffness fraction x the benchmark's (time step and drag scaled to keep
-//- their ratios to the contact time sqrt(m / k), grains of size x their full size), from rest;
-//- the packing takes the end state, at rest.
-void quenchedRun(Packing& packing, const Parameters& benchmark, double fraction, double drag,
-                 int steps, double size = 1.0)
+//- One run at stiffness fraction x the benchmark's (time step and drag scaled to keep their
+//- ratios to the contact time sqrt(m / k), grains of size x their full size), from rest, with
+//- contact dashpots of dampingRatio x critical for the pair's mass (grain-grain m / 2,
+//- grain-wall m): they damp the relative normal and sliding motion of touching grains, and so
+//- their spins too, which the drag does not. Runs at least minSteps steps, then in chunks of
+//- checkSteps until the kinetic energy has decayed below restEnergy x N (m g)^2 / k (the
+//- elastic energy of one grain resting on one contact under its own weight: it scales as the
+//- energy each stiffening releases) or maxSteps is reached. The kinetic energy counts the
+//- rotation as m (|w| (r + h))^2 / 2, an upper bound (all mass lies within r + h of the centre).
+//- The packing takes the end state, at rest; returns the steps run.
+long settledRun(Packing& packing, const Parameters& benchmark, double fraction, double drag,
+                double dampingRatio, double skin, int minSteps, int checkSteps, int maxSteps,
+                double restEnergy, double size = 1.0)
 {
     const double scale = std::sqrt(fraction) / std::pow(size, 1.5);     // dt: sqrt(m / k)
     const double dragScale = std::sqrt(fraction) * std::pow(size, 1.5); // drag: sqrt(m k)
@@ -62,43 +71,79 @@ void quenchedRun(Packing& packing, const Parameters& benchmark, double fraction,
     p.grainGrain.normalStiffness *= fraction;
     p.grainGrain.tangentialStiffness *= fraction;
     p.grainWall = p.grainGrain;
+    const double mass =
+        packing.grains.empty() ? 0.0 : p.defaultDensity * volumeOf(packing.grains[0]);
+    const double k = p.grainGrain.normalStiffness;
+    p.grainGrain.normalDamping = 2.0 * dampingRatio * std::sqrt(0.5 * mass * k);
+    p.grainGrain.tangentialDamping =
+        2.0 * dampingRatio * std::sqrt(0.5 * mass * p.grainGrain.tangentialStiffness);
+    p.grainWall.normalDamping = 2.0 * dampingRatio * std::sqrt(mass * k);
+    p.grainWall.tangentialDamping =
+        2.0 * dampingRatio * std::sqrt(mass * p.grainWall.tangentialStiffness);
     p.timeStep = benchmark.timeStep / scale;
-    p.neighbourSkin = std::max(benchmark.neighbourSkin, 1e-3);
+    p.neighbourSkin = std::max(benchmark.neighbourSkin, skin);
     System system(p);
+    for (GrainInit& g : packing.grains)
+    {
+        g.velocity = {0.0, 0.0, 0.0};
+        g.angularVelocity = {0.0, 0.0, 0.0};
+    }
     system.addGrains(packing.grains);
     WallSpec bottom;
     bottom.side = WallSpec::Side::lower;
     bottom.position = 0.0;
     system.addWall(bottom);
     system.setViscousDrag(drag * dragScale);
-    system.step(steps);
+    const double weight = mass * std::fabs(benchmark.gravity[2]);
+    const double threshold = restEnergy * double(packing.grains.size()) * weight * weight / k;
+    long steps = 0;
+    double energy = 0;
+    GrainData out;
+    while (true)
+    {
+        const int chunk = steps < minSteps ? minSteps : checkSteps;
+        system.step(chunk);
+        steps += chunk;
+        out = system.grains();
+        energy = 0;
+        for (std::size_t i = 0; i < packing.grains.size(); ++i)
+        {
+            double v2 = 0, w2 = 0;
+            for (int d = 0; d < 3; ++d)
+            {
+                v2 += out.velocity[3 * i + d] * out.velocity[3 * i + d];
+                w2 += out.angularVelocity[3 * i + d] * out.angularVelocity[3 * i + d];
+            }
+            const double reach = out.radius[i] + out.coreHalfLength[i];
+            energy += 0.5 * out.mass[i] * (v2 + w2 * reach * reach);
+        }
+        if (energy < threshold || steps >= maxSteps)
+            break;
+    }
     const GrainOverlap overlap = system.largestOverlap();
     const double contacts = 2.0 * double(system.contactCount()) / double(packing.grains.size());
-    const GrainData out = system.grains();
-    double fastest = 0, spin = 0;
     for (std::size_t i = 0; i < packing.grains.size(); ++i)
     {
         GrainInit& g = packing.grains[i];
-        double v2 = 0, w2 = 0;
         for (int d = 0; d < 3; ++d)
-        {
             g.position[d] = out.position[3 * i + d];
-            v2 += out.velocity[3 * i + d] * out.velocity[3 * i + d];
-            w2 += out.angularVelocity[3 * i + d] * out.angularVelocity[3 * i + d];
-        }
         for (int c = 0; c < 4; ++c)
             g.orientation[c] = out.orientation[4 * i + c];
-        fastest = std::max(fastest, std::sqrt(v2));
-        spin = std::max(spin, std::sqrt(w2));
     }
     double interior;
     const double bed = bedSolidFraction(packing, interior);
-    std::printf("capsule packing: k = %.3g N/m, dt = %.3g s, drag %.3g N s/m, %d steps: largest "
-                "overlap %.2g r, %.3f contacts per grain, fastest grain %.2g m/s, %.2g rad/s, "
-                "solid fraction %.3f (bed) / %.3f (0.05 < z < 0.30 m)\n",
-                p.grainGrain.normalStiffness, p.timeStep, drag * dragScale, steps,
-                overlap.relativeOverlap, contacts, fastest, spin, bed, interior);
+    std::printf("capsule packing: k = %.3g N/m, dt = %.3g s, drag %.3g N s/m, dashpots %.2g "
+                "critical, %ld steps (%zu rebuilds): kinetic energy %.2g of %.2g J%s, largest "
+                "overlap %.2g r, %.3f contacts per grain, solid fraction %.3f (bed) / %.3f "
+                "(0.05 < z < 0.30 m)\n",
+                k, p.timeStep, drag * dragScale, dampingRatio, steps,
+                system.neighbourRebuildCount(), energy, threshold,
+                energy < threshold    ? " (at rest)"
+                : minSteps < maxSteps ? " (NOT at rest: step limit)"
+                                      : "",
+                overlap.relativeOverlap, contacts, bed, interior);
     std::fflush(stdout);
+    return steps;
 }
 
 } // namespace
@@ -132,30 +177,43 @@ Packing capsulePacking(const Packing& spheres, const Parameters& benchmark, doub
         }
     };
 
-    // Stages of stiffness k = fraction k_bench, fraction x 10 each, up to k_bench / 10. The time
+    // Growth at the first, softest stiffness: fixed damped runs (drag and dashpots) after each
+    // growth step. Then stages of stiffness k = fraction k_bench, x stiffeningFactor each, up
+    // to k_bench itself, each run with dashpots until the kinetic energy has decayed. The time
     // step and the drag keep the benchmark's ratios to the contact time sqrt(m / k) (dt ~ 1/32
-    // of a contact, drag 612 N s/m damping in ~83 steps) by scaling with sqrt(k_bench / k).
-    // A looser Verlet skin (0.05 d) while the grains move.
-    for (double fraction = settings.firstStiffnessFraction; fraction < 0.5; fraction *= 10.0)
+    // of a contact) by scaling with sqrt(k_bench / k). A looser Verlet skin while grains move.
+    const double f0 = settings.firstStiffnessFraction;
+    const double z = settings.dampingRatio;
+    const double e = settings.restEnergy;
+    long total = 0;
+    const auto clockStart = std::chrono::steady_clock::now();
+    for (int k = 1; k <= settings.growthRuns; ++k)
     {
-        const bool first = fraction == settings.firstStiffnessFraction;
-        if (first)
-            for (int k = 1; k <= settings.growthRuns; ++k)
-            {
-                resize(start * std::pow(1.0 / start, double(k) / settings.growthRuns));
-                if (k == settings.growthRuns)
-                    resize(1.0); // exactly the full size
-                quenchedRun(packing, benchmark, fraction, drag, settings.growthSteps,
-                            packing.grains.empty() ? 1.0 : packing.grains[0].radius / radius[0]);
-            }
-        std::vector<std::pair<int, double>> runs; // steps, drag relative to the scaled one
-        if (first)
-            runs.push_back({settings.settleSteps, settings.settleDragFraction});
-        for (int k = 0; k < settings.runsPerStage; ++k)
-            runs.push_back({settings.runSteps, 1.0});
-        for (const auto& [steps, dragFraction] : runs)
-            quenchedRun(packing, benchmark, fraction, dragFraction * drag, steps);
+        resize(start * std::pow(1.0 / start, double(k) / settings.growthRuns));
+        if (k == settings.growthRuns)
+            resize(1.0); // exactly the full size
+        const double size = packing.grains.empty() ? 1.0 : packing.grains[0].radius / radius[0];
+        total +=
+            settledRun(packing, benchmark, f0, drag, z, settings.growthSkin, settings.growthSteps,
+                       settings.growthSteps, settings.growthSteps, e, size);
     }
+    for (double fraction = f0;; fraction = std::min(1.0, fraction * settings.stiffeningFactor))
+    {
+        const bool first = fraction == f0;
+        // The first stage without drag (the raised bed falls back); then the drag too: the
+        // dashpots damp the bed's slow collective modes weakly (their damping ratio falls with
+        // the mode's frequency), the drag damps them all at the same rate.
+        total += settledRun(packing, benchmark, fraction,
+                            first ? 0.0 : settings.stageDragFraction * drag, z,
+                            first ? settings.growthSkin : settings.settleSkin,
+                            first ? settings.settleSteps : settings.checkSteps, settings.checkSteps,
+                            settings.maxStageSteps, e);
+        if (fraction == 1.0)
+            break;
+    }
+    std::printf(
+        "capsule packing: %ld steps in all, %.1f s\n", total,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count());
     return packing;
 }
 
