@@ -76,38 +76,6 @@ struct LinearSpringContact
     }
 };
 
-//- Result of one contact: force and torque on i, torque on j, and their parts (the torques are
-//- lever (n x f)).
-struct ContactLoads
-{
-    Vector3d forceOnI, torqueOnI, torqueOnJ, nCrossF;
-    double leverI, leverJ;
-};
-
-//- Geometry and kinematics of two touching spheres (or sphere and wall: radiusJ = 0,
-//- omegaJ = 0) and the law's loads. Lever arms reach the middle of the overlap.
-DEM_HD ContactLoads evaluateContact(const LinearSpringContact& law, const Vector3d& n,
-                                    double overlap, double radiusI, double radiusJ,
-                                    const Vector3d& velocityI, const Vector3d& velocityJ,
-                                    const Vector3d& omegaI, const Vector3d& omegaJ,
-                                    Vector3d& history)
-{
-    const double leverI = radiusI - 0.5 * overlap;
-    const double leverJ = radiusJ - 0.5 * overlap;
-    // omega_i x (l_i n) + omega_j x (l_j n) = (l_i omega_i + l_j omega_j) x n
-    const Vector3d relative = velocityI - velocityJ + (leverI * omegaI + leverJ * omegaJ).cross(n);
-    Vector3d tangentialForce;
-    const double normalMagnitude = law.forces(n, overlap, relative, history, tangentialForce);
-    ContactLoads loads;
-    loads.forceOnI = tangentialForce - normalMagnitude * n;
-    loads.nCrossF = n.cross(tangentialForce); // n x n = 0
-    loads.leverI = leverI;
-    loads.leverJ = leverJ;
-    loads.torqueOnI = leverI * loads.nCrossF;
-    loads.torqueOnJ = leverJ * loads.nCrossF;
-    return loads;
-}
-
 } // namespace DEM_KERNEL_NS
 } // namespace detail
 } // namespace dem

@@ -77,9 +77,17 @@ struct CapsuleShapes
     static constexpr int kReactionComponents = kCapsuleReactionComponents;
 };
 
+//- Result of one contact: force and torque on i, torque on j, and their parts (the torques are
+//- lever (n x f)).
+struct ContactLoads
+{
+    Vector3d forceOnI, torqueOnI, torqueOnJ, nCrossF;
+    double leverI, leverJ;
+};
+
 //- Two touching spheres (or sphere and wall: radiusJ = 0, omegaJ = 0) under any law: loads
-//- with lever arms to the middle of the overlap. With LinearSpringContact the arithmetic of
-//- evaluateContact (the law ignores the pair).
+//- with lever arms to the middle of the overlap (the arithmetic the sphere code always had;
+//- LinearSpringContact ignores the pair).
 template <class Law>
 DEM_HD ContactLoads sphereContact(const Law& law, const Vector3d& n, double overlap, double radiusI,
                                   double radiusJ, const Vector3d& velocityI,
@@ -272,10 +280,6 @@ struct PairForceKernel
         const double x = a[k], y = a[k + s], z = a[k + 2 * s];
         return Vector3d(x, y, z);
     }
-
-    //- Squared fraction of the radii sum below which two centres count as coincident (1e-12:
-    //- far below any physical overlap, far above where 1/distance overflows).
-    static constexpr double kCoincidentFraction2 = 1e-24;
 
     DEM_HD void operator()(long p) const
     {
