@@ -152,6 +152,43 @@ void System::setGrainFlags(const std::vector<int>& indices, GrainFlag flag, doub
     impl_->engine->setGrainFlags(indices, flag, vx, vy);
 }
 
+void System::setGrainVelocities(const std::vector<int>& indices,
+                                const std::array<double, 3>& velocity,
+                                const std::array<double, 3>& angularVelocity)
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        require(std::isfinite(velocity[d]), "velocity", velocity[d], "finite");
+        require(std::isfinite(angularVelocity[d]), "angularVelocity", angularVelocity[d], "finite");
+    }
+    impl_->engine->setGrainVelocities(indices, velocity, angularVelocity);
+}
+
+void System::setGravity(const std::array<double, 3>& gravity)
+{
+    for (int d = 0; d < 3; ++d)
+        require(std::isfinite(gravity[d]), "gravity", gravity[d], "finite");
+    impl_->parameters.gravity = gravity;
+    impl_->engine->setGravity(gravity);
+}
+
+void System::addBonds(const std::vector<BondInit>& bonds)
+{
+    if (!impl_->parameters.bonds.enabled)
+        throw Error("addBonds: bonds are not enabled (Parameters::bonds.enabled)");
+    impl_->engine->addBonds(bonds);
+}
+
+BondData System::bonds() const
+{
+    return impl_->engine->bonds();
+}
+
+BondCounts System::bondCounts() const
+{
+    return impl_->engine->bondCounts();
+}
+
 void System::setViscousDrag(double drag)
 {
     require(drag >= 0, "viscousDrag", drag, ">= 0");

@@ -23,7 +23,11 @@ enum class GrainFlag : std::int32_t
     free = 0,               //!< translation and rotation from forces
     fixed = 1,              //!< v = omega = 0 for ever
     prescribedVelocity = 2, //!< vx, vy prescribed, no rotation, free along z
-    translationOnly = 3     //!< free translation, no rotation (sliding blocks, tests)
+    translationOnly = 3,    //!< free translation, no rotation (sliding blocks, tests)
+    //- moves with its velocity and angular velocity for ever, whatever the loads (a driven
+    //- grain: bond and contact tests, kinematic boundaries); capsules turn at that omega.
+    //- Set them with System::setGrainVelocities.
+    driven = 4
 };
 
 //- The contact laws (a run-time family; doc/EQUATIONS.md section 1 and the snow section).
@@ -52,27 +56,99 @@ struct ContactMaterial
     double tangentialDampingRatio = 0.0;      //!< c_t / (2 sqrt(m* k_t))
 };
 
-//- A plane z = position bounding the grains from below (lower) or above (upper).
+//- An axis-aligned plane x[axis] = position bounding the grains from below (lower: normal
+//- +e_axis, grains on its + side) or above (upper: normal -e_axis). It moves along its axis.
 struct WallSpec
 {
     enum class Side
     {
-        lower, //!< normal +z, grains above it
-        upper  //!< normal -z, grains below it
+        lower, //!< normal +e_axis, grains on its + side
+        upper  //!< normal -e_axis, grains on its - side
     };
     enum class Mode
     {
         fixed,    //!< never moves
-        velocity, //!< moves with the prescribed velocity along z
-        stress    //!< mass m under normal stress sigma0 over the box area (upper walls push down)
+        velocity, //!< moves with the prescribed velocity along its axis
+        //- mass m under normal stress sigma0 pressing it onto the grains, over its area: z walls
+        //- the box's x-y area; x (y) walls the box's y (x) length times the current gap
+        //- between the z walls (refused without a lower and an upper z wall)
+        stress,
+        //- mass m moved by the grains' force and its own weight m g[axis] (the free lid of
+        //- Johnson & Hopkins 2005); follows a gravity ramp (System::setGravity)
+        free
     };
     Side side = Side::lower;
     Mode mode = Mode::fixed;
-    double position = 0.0;     //!< z of the plane [m]
-    double velocity = 0.0;     //!< initial (stress) or prescribed (velocity) z-velocity [m/s]
-    double mass = 0.0;         //!< stress mode: wall mass [kg]
+    int axis = 2;              //!< 0: an x plane, 1: y, 2: z
+    double position = 0.0;     //!< the plane's coordinate along its axis [m]
+    double velocity = 0.0;     //!< initial (stress, free) or prescribed (velocity) [m/s]
+    double mass = 0.0;         //!< stress and free modes: wall mass [kg]
     double normalStress = 0.0; //!< stress mode: sigma0 [Pa], pressing the wall onto the grains
     bool frictional = true;    //!< false: frictionless wall (no tangential force)
+};
+
+//- Models of each bond mechanism (Johnson & Hopkins 2005; doc/EQUATIONS.md, bonds). Each
+//- mechanism is a family: none switches it off; a new model is a value here, its evaluator in
+//- src/kernels/bonds/ and a branch in BondLaw.
+enum class BondCreep
+{
+    none,
+    maxwell //!< grain-boundary creep: shear, twist, bend relax as Maxwell elements (Newtonian)
+};
+enum class BondCompressiveCreep
+{
+    none,
+    powerLaw //!< normal creep rate 2 Rbar A0 exp(-Q / (R_g T_K)) |sigma_n|^m(T), compression
+};
+enum class BondStrength
+{
+    none,           //!< bonds never break
+    iceTemperature, //!< sigma_ice[MPa] = 0.99648 - 0.045904 T[C] (tension and shear), scaled
+    constant        //!< tensileStrength, shearStrength as given
+};
+enum class BondSintering
+{
+    none,
+    pressureSintering //!< dr_b/dt = (R*/m) (r_b/R*)^(1-m) A(T) sigma_c^3, sigma_c = compressive N/A
+};
+enum class BondFormation
+{
+    none,           //!< only bonds added with System::addBonds
+    frozenOnContact //!< every touching unbonded pair freezes: r_b^2 uniform in areaFraction r^2
+};
+
+//- Bonds (frozen ice contacts): a store separate from the neighbour list. Off by default.
+struct BondParameters
+{
+    bool enabled = false; //!< false: no bond store, no bond cost, addBonds refused
+    // elastic patch: k_ne = E / (2 Rbar) per unit area; A = pi r_b^2, I = pi r_b^4 / 4, J = 2 I
+    double youngsModulus = 0.0;          //!< E [Pa] (> 0 when enabled)
+    double shearToNormalStiffness = 0.6; //!< k_se / k_ne
+    double normalDampingRatio = 0.0;     //!< dashpot on N, fraction of critical (reduced mass)
+    double shearDampingRatio = 0.0;      //!< dashpot on S, fraction of critical
+    double temperature = -10.0;          //!< T [degrees C] (strength, creep, sintering)
+    // grain-boundary creep: tau_shear = tau_twist = nu_s / (0.6 E), tau_bend = nu_s / E
+    BondCreep creep = BondCreep::none;
+    double contactViscosity = 0.0;                               //!< nu_s [Pa s] (> 0 with maxwell)
+    bool shearCreep = true, twistCreep = true, bendCreep = true; //!< each mechanism on/off
+    // compressive power-law creep (ice constants of Jones & Brunet as defaults)
+    BondCompressiveCreep compressiveCreep = BondCompressiveCreep::none;
+    double creepPrefactor = 0.00554458;    //!< A0 [s^-1 Pa^-m]
+    double creepActivationEnergy = 70.0e3; //!< Q [J/mol]
+    // strength and strain-softening fracture (r_b shrinks; broken below brokenFraction Rbar)
+    BondStrength strength = BondStrength::none;
+    double strengthScale = 1.0;   //!< iceTemperature: multiplies sigma_ice (scaled runs)
+    double tensileStrength = 0.0; //!< constant [Pa]
+    double shearStrength = 0.0;   //!< constant [Pa]
+    double softeningRatio = 1.0;  //!< k_2 / k_1, slope of the softening branch over the elastic
+    double brokenFraction = 0.05; //!< broken when r_b < brokenFraction Rbar
+    // sintering
+    BondSintering sintering = BondSintering::none;
+    // formation
+    BondFormation formation = BondFormation::none;
+    std::array<double, 2> areaFraction{0.03125, 0.09375}; //!< r_b^2 / r_min^2 range (uniform)
+    int formationInterval = 1; //!< steps between freezing checks (the contact law acts between)
+    std::uint64_t seed = 1;    //!< new bonds' r_b: hash of (seed, grain ids), no thread effect
 };
 
 //- The System's construction parameters.
@@ -96,6 +172,7 @@ struct Parameters
     //- Contact (neighbour-pair) storage limit per grain; 0 = grow without limit. Exceeding a
     //- set limit throws dem::Error; storage never drops a pair silently.
     int maxPairsPerGrain = 0;
+    BondParameters bonds;
 };
 
 //- One grain to add: a sphere, or a capsule (a core segment of length 2 coreHalfLength along
@@ -112,6 +189,13 @@ struct GrainInit
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
     std::array<double, 3> angularVelocity{0.0, 0.0, 0.0};
     GrainFlag flag = GrainFlag::free;
+};
+
+//- One bond to add between grains first and second (add-order indices, first != second).
+struct BondInit
+{
+    int first = -1, second = -1;
+    double patchRadius = 0.0; //!< r_b [m], > 0
 };
 
 } // namespace dem

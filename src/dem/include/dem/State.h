@@ -7,6 +7,7 @@
 
 #include "dem/Parameters.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -51,8 +52,32 @@ struct WallData
 {
     double position = 0.0;
     double velocity = 0.0;
-    double grainForce = 0.0; //!< z-force of the grains on the wall [N] (+ pushes it up)
+    double grainForce = 0.0; //!< force of the grains on the wall along its axis [N] (+: to +axis)
     WallSpec spec;
+};
+
+//- The intact bonds, sorted by (first, second), first < second (add-order indices). Vectors 3
+//- per bond interleaved, in the global frame; loads are those on `first` (on `second`: minus).
+struct BondData
+{
+    std::vector<int> first, second;
+    std::vector<double> patchRadius; //!< r_b [m]
+    std::vector<double> normalForce; //!< N [N], tension positive (elastic part)
+    std::vector<double> shearForce;  //!< S [N] (3), in the contact plane
+    std::vector<double> twistMoment; //!< M_t [N m] along the normal (scalar)
+    std::vector<double> bendMoment;  //!< M_b [N m] (3), in the contact plane
+    std::vector<double> normal;      //!< n (3), unit, from first to second (cores' closest points)
+    std::vector<double> point;       //!< contact point (3), wrapped into the periodic box
+    std::vector<double> age;         //!< time since the bond formed [s]
+    std::vector<std::uint8_t> softening; //!< 1 once r_b shrinks (past peak strength)
+};
+
+//- Bond totals: intact now, formed and broken since the System was built (restart keeps them),
+//- and intact bonds whose grains do not touch (held by tension).
+struct BondCounts
+{
+    std::size_t intact = 0, formed = 0, broken = 0, apart = 0;
+    double meanPatchRadius = 0.0; //!< over intact bonds (0 without)
 };
 
 struct SystemState

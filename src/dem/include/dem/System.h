@@ -16,6 +16,7 @@
 #include "dem/State.h"
 #include "dem/UniformGrid.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -51,7 +52,16 @@ public:
     //- Set the flag of grains `indices`; prescribedVelocity uses (vx, vy) for all of them.
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx = 0.0,
                        double vy = 0.0);
+    //- Set velocity and angular velocity of grains `indices` (any flag; a driven grain keeps
+    //- them for ever). omega of a capsule sets its angular momentum.
+    void setGrainVelocities(const std::vector<int>& indices, const std::array<double, 3>& velocity,
+                            const std::array<double, 3>& angularVelocity);
     void setViscousDrag(double dragCoefficient);
+    //- Change gravity (ramps): grains and free walls feel it from the next step.
+    void setGravity(const std::array<double, 3>& gravity);
+    //- Add bonds (Parameters::bonds.enabled); refused for unknown grains, a pair bonded twice or
+    //- r_b <= 0. A bond acts while intact, whatever the distance of its grains.
+    void addBonds(const std::vector<BondInit>& bonds);
     //- Change the time step (checked against the critical step at the next step()).
     void setTimeStep(double dt);
 
@@ -73,8 +83,11 @@ public:
     //- Time integral of that force since the grains were added [N s], summed every step:
     //- differences over an interval give the interval's mean shear resistance.
     double prescribedGrainImpulseX() const;
-    //- Grain-grain pairs currently touching (each counted once).
+    //- Grain-grain pairs currently touching (each counted once; bonded pairs included).
     std::size_t contactCount() const;
+    //- Intact bonds and their state (empty without bonds).
+    BondData bonds() const;
+    BondCounts bondCounts() const;
     //- The pair of grains that overlap most relative to their smaller radius (shapes as they
     //- are, through the neighbour search: a start-state check before the first step; builds
     //- the neighbour list if it is not current).

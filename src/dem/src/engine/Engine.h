@@ -4,10 +4,12 @@
 // EngineImpl<CudaExecution> (nvcc). No Thrust or CUDA type appears here.
 #pragma once
 
+#include "dem/Error.h"
 #include "dem/Parameters.h"
 #include "dem/State.h"
 #include "dem/UniformGrid.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -30,6 +32,23 @@ public:
     virtual void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                                double vy) = 0;
     virtual void setViscousDrag(double drag) = 0;
+    // Issue 11 interfaces (bonds, walls, gravity): the engine overrides these; until then
+    // they refuse with a clear error.
+    virtual void setGrainVelocities(const std::vector<int>&, const std::array<double, 3>&,
+                                    const std::array<double, 3>&)
+    {
+        throw Error("setGrainVelocities is not implemented yet");
+    }
+    virtual void setGravity(const std::array<double, 3>&)
+    {
+        throw Error("setGravity is not implemented yet");
+    }
+    virtual void addBonds(const std::vector<BondInit>&)
+    {
+        throw Error("addBonds is not implemented yet");
+    }
+    virtual BondData bonds() const { return BondData{}; }
+    virtual BondCounts bondCounts() const { return BondCounts{}; }
     virtual void setTimeStep(double dt) = 0;
     virtual void step(int nSteps) = 0;
 
