@@ -1,13 +1,14 @@
 // BondKernels.h
 // The bond store's kernels, written once for both backends: the per-bond force pass
 // (BondForceKernel: geometry and motion of the two grains, BondLaw::advance, a load record of
-// 9), the read-back of a bond's normal and contact point, the per-grain index of the bonds a
+// 9), the per-grain index of the bonds a
 // grain belongs to (the fixed-order gather in GatherKick), the bonded flag of each neighbour
 // pair (the pair kernel leaves bonded pairs to the bond) and the formation of new bonds.
 #pragma once
 
 #include "kernels/CapsuleGeometry.h"
 #include "kernels/Views.h"
+#include "kernels/bonds/BondGeometry.h"
 #include "kernels/bonds/BondLaw.h"
 
 #include <cstdint>
@@ -91,32 +92,6 @@ struct BondView
     }
 };
 
-//- Where a bond sits: the cores' closest points (valid whether the grains touch or not; a
-//- sphere's core is its centre). d = x_B - x_A (minimum image), aA, aB the half-axis vectors.
-//- delta = R_A + R_B - distance (overlap > 0, gap < 0); the contact point is the middle of the
-//- overlap or gap, c = (x_A + u_A a_A) + (R_A - delta/2) n. Cores that intersect have no
-//- direction: +z, as the contact geometry does.
-DEM_HD BondGeometry bondGeometry(const Vector3d& d, const Vector3d& aA, const Vector3d& aB,
-                                 double radiusA, double radiusB, double& delta)
-{
-    double uA, uB;
-    closestSegmentParameters(aA, aB, d, uA, uB);
-    const Vector3d separation = d - (uA * aA - uB * aB);
-    const double sumRadii = radiusA + radiusB;
-    const double distance2 = separation.squaredNorm();
-    const bool coincident = distance2 < kCoincidentFraction2 * sumRadii * sumRadii;
-    const double distance =
-        std::sqrt(coincident ? kCoincidentFraction2 * sumRadii * sumRadii : distance2);
-    BondGeometry g;
-    g.normal = coincident ? Vector3d(0.0, 0.0, 1.0) : Vector3d(separation / distance);
-    delta = sumRadii - distance;
-    g.offsetA = uA * aA + (radiusA - 0.5 * delta) * g.normal;
-    g.offsetB = g.offsetA - d;
-    g.radiusA = radiusA;
-    g.radiusB = radiusB;
-    return g;
-}
-
 //- Per bond: its geometry and motion at the packed state, one step of BondLaw::advance (the
 //- state is updated in place) and the load record. Returns 1 for a bond that broke this step
 //- (its loads are zero; the engine removes it before the gather), else 0: the engine sums it.
@@ -136,10 +111,9 @@ struct BondForceKernel
         const double* vw = g.packedVelocities;
         const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
         const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
-        double delta;
         const BondGeometry geometry =
             bondGeometry(box.separation(xi, xj), g.packedHalfAxisOf(i), g.packedHalfAxisOf(j),
-                         xr[4 * i + 3], xr[4 * j + 3], delta);
+                         xr[4 * i + 3], xr[4 * j + 3]);
         BondMotion motion;
         motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
         motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
@@ -181,37 +155,6 @@ struct BondGather
             const double* t = l + (isA ? 3 : 6);
             torque += Vector3d(t[0], t[1], t[2]);
         }
-    }
-};
-
-//- Read-back: the unit normal (3) and the contact point (3, wrapped into the periodic box) of
-//- each bond at the SoA state, and whether its grains touch (1) or not (0).
-struct BondReadback
-{
-    GrainView g;
-    BondView bonds;
-    BoxView box;
-    double* normal; //!< 3 per bond
-    double* point;  //!< 3 per bond
-    double* touching;
-
-    DEM_HD void operator()(int b) const
-    {
-        const int i = bonds.grainA[b], j = bonds.grainB[b];
-        const Vector3d xi = g.position(i);
-        double delta;
-        const BondGeometry geometry = bondGeometry(box.separation(xi, g.position(j)), g.halfAxis(i),
-                                                   g.halfAxis(j), g.radius[i], g.radius[j], delta);
-        Vector3d c = xi + geometry.offsetA;
-        for (int d = 0; d < 2; ++d)
-            if (box.periodic[d])
-                c[d] -= box.length[d] * std::floor((c[d] - box.lower[d]) / box.length[d]);
-        for (int d = 0; d < 3; ++d)
-        {
-            normal[3L * b + d] = geometry.normal[d];
-            point[3L * b + d] = c[d];
-        }
-        touching[b] = delta > 0.0 ? 1.0 : 0.0;
     }
 };
 
