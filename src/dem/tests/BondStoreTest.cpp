@@ -327,6 +327,61 @@ TEST_P(BondStore, RestartContinuesBitIdentically)
     EXPECT_TRUE(identical(ga.orientation, gb.orientation));
 }
 
+TEST_P(BondStore, BrokenBondIsRemovedAndTheContactLawReturns)
+{
+    // Two spheres just touching (r = 10 mm), bonded (r_b = 3 mm, tensile strength 1 kPa, no
+    // shear failure, softening ratio 1): the driven one pulls away at 1 cm/s. k_ne = E / (2 Rbar)
+    // = 5e7 Pa/m, so the bond softens past an opening of sigma_t / k_ne = 20 um and breaks by
+    // 40 um (the softening branch reaches zero), i.e. after 2 and 4 ms (200 and 400 steps).
+    // The store must drop it and count it; pushed back together, the pair feels the contact
+    // law again: -k delta on the fixed grain, from a history that starts at zero.
+    dem::Parameters p = bondParameters();
+    p.bonds.strength = dem::BondStrength::constant;
+    p.bonds.tensileStrength = 1e3;
+    p.bonds.shearStrength = 0.0; // never fails in shear
+    p.bonds.softeningRatio = 1.0;
+    dem::System s(p);
+    dem::GrainInit a, b;
+    a.radius = b.radius = 0.01;
+    a.position = {0.5, 0.5, 0.5};
+    a.flag = dem::GrainFlag::fixed;
+    b.position = {0.52, 0.5, 0.5};
+    b.flag = dem::GrainFlag::driven;
+    s.addGrains({a, b});
+    s.addBonds({{0, 1, 0.003}});
+    s.setGrainVelocities({1}, {0.01, 0.0, 0.0}, {0.0, 0.0, 0.0});
+    s.step(300); // 30 um: softening
+    const dem::BondData softened = s.bonds();
+    ASSERT_EQ(softened.first.size(), 1u);
+    std::printf("  at 30 um: r_b %.6e m, softening %d, N %.6e N\n", softened.patchRadius[0],
+                int(softened.softening[0]), softened.normalForce[0]);
+    EXPECT_EQ(softened.softening[0], 1);
+    // x = 30 um / 20 um = 1.5 on the branch: r_b = r_0 sqrt((1 - (x - 1)) / x) (the
+    // softening closed form, 300 increments: round-off far below 1e-9 relative)
+    EXPECT_NEAR(softened.patchRadius[0], 0.003 * std::sqrt(0.5 / 1.5), 1e-9 * 0.003);
+    s.step(200); // 50 um: broken
+    dem::BondCounts counts = s.bondCounts();
+    std::printf("  at 50 um: %zu intact, %zu broken, %zu formed\n", counts.intact, counts.broken,
+                counts.formed);
+    EXPECT_EQ(counts.intact, 0u);
+    EXPECT_EQ(counts.broken, 1u);
+    EXPECT_EQ(counts.formed, 0u);
+    EXPECT_TRUE(s.bonds().first.empty());
+    EXPECT_EQ(s.grains().force[0], 0.0); // apart and unbonded: nothing acts
+    // Back by 60 um: 10 um of overlap at the end.
+    s.setGrainVelocities({1}, {-0.01, 0.0, 0.0}, {0.0, 0.0, 0.0});
+    s.step(600);
+    const dem::GrainData g = s.grains();
+    const double overlap = 0.02 - (g.position[3] - g.position[0]);
+    std::printf("  overlap %.6e m, force on the fixed grain %.9e N, contacts %zu\n", overlap,
+                g.force[0], s.contactCount());
+    EXPECT_GT(overlap, 5e-6);
+    EXPECT_EQ(s.contactCount(), 1u);
+    EXPECT_EQ(s.bondCounts().broken, 1u);
+    // k delta with delta from the read-back positions (round-off 1e-16 m of 1e-5 m)
+    EXPECT_NEAR(g.force[0], -1e6 * overlap, 1e-9 * 1e6 * overlap);
+}
+
 TEST_P(BondStore, BadBondsAreRefusedByName)
 {
     auto refused = [](const std::function<void()>& call, const std::string& expected)
