@@ -158,12 +158,12 @@ struct BondGather
     }
 };
 
-//- The sort key of a bond: (first, second) in one 64-bit integer.
+//- The sort key of a bond: its grains' internal indices (A, B) in one 64-bit integer.
 struct BondKey
 {
-    DEM_HD std::int64_t operator()(int first, int second) const
+    DEM_HD std::int64_t operator()(int a, int b) const
     {
-        return std::int64_t(first) << 32 | std::int64_t(std::uint32_t(second));
+        return std::int64_t(a) << 32 | std::int64_t(std::uint32_t(b));
     }
 };
 
@@ -181,20 +181,29 @@ struct InvertIds
     DEM_HD void operator()(int i) const { internalOf[id[i]] = i; }
 };
 
-//- Each bond's internal grain indices, and the keys of its two per-grain entries.
+//- Each bond's internal grain indices.
 struct RemapBonds
 {
     BondView bonds;
     const int* internalOf;
-    int* entryKey; //!< 2 per bond: the grain of entry 2 b + end
 
     DEM_HD void operator()(int b) const
     {
-        const int a = internalOf[bonds.first[b]], bb = internalOf[bonds.second[b]];
-        bonds.grainA[b] = a;
-        bonds.grainB[b] = bb;
-        entryKey[2L * b] = a;
-        entryKey[2L * b + 1] = bb;
+        bonds.grainA[b] = internalOf[bonds.first[b]];
+        bonds.grainB[b] = internalOf[bonds.second[b]];
+    }
+};
+
+//- The keys of each bond's two per-grain entries: the grain of entry 2 b + end.
+struct BondEntryKeys
+{
+    BondView bonds;
+    int* entryKey;
+
+    DEM_HD void operator()(int b) const
+    {
+        entryKey[2L * b] = bonds.grainA[b];
+        entryKey[2L * b + 1] = bonds.grainB[b];
     }
 };
 
