@@ -4,7 +4,8 @@
 // (elastic slopes k_ne A, k_se A, k_se J, k_ne I); Maxwell relaxation at constant deformation
 // and at dt >> tau; tensile rupture at sigma_ice(T) A; the softening sequence of r_b; a grain
 // resting on a bond under gravity sintering at constant load; a bonded column under a
-// stress-controlled lid creeping at the rate of the compressive creep law for bonds in series.
+// stress-controlled lid creeping at the rate of the compressive creep law for bonds in series;
+// a chain of Maxwell elements creeping sideways under its own weight.
 // The evaluator's closed forms are derived in doc/EQUATIONS.md section 10.
 #include "CapsuleTestSupport.h"
 
@@ -336,6 +337,50 @@ TEST_P(BondedGrains, ColumnUnderALidCreepsAtThePowerLawRate)
     for (int i = 0; i < 3; ++i)
         EXPECT_LT(relative(b.normalForce[i], -F), 1e-3);
     EXPECT_LT(relative(rate, predicted), 1e-4);
+}
+
+TEST_P(BondedGrains, MaxwellChainCreepsUnderItsWeight)
+{
+    // Four spheres stacked along z and bonded in series, the lowest fixed, the others free to
+    // move but not to turn (translationOnly: no bending), under gravity along x. At steady
+    // creep bond k (from the bottom, k = 1..3) carries the weight of the 4 - k grains above it
+    // as its shear force, S_k = (4 - k) m g, and slides at the Newtonian rate of its Maxwell
+    // element, S / (k_se A tau_s) = 2 Rbar S / (A nu_s); the top grain moves at the sum,
+    // 2R m g (3 + 2 + 1) / (A nu_s). nu_s = 1 kPa s: tau_s = 1.7e-4 s, the start dies out
+    // within 5 ms (creep damps the shear oscillation, omega tau_s = 2.5); then 5 ms of creep
+    // tilt the lowest bond by 2e-3 rad, so the tilt changes the rates by ~phi^2 = 4e-6 and
+    // the loads' shares by as little: tolerance 1e-4.
+    dem::Parameters p = bondedParameters(parameters());
+    const double nu = 1e3, g = 9.81;
+    p.boxLower = {0, 0};
+    p.boxUpper = {10 * R, 10 * R};
+    p.gravity = {g, 0, 0};
+    p.bonds.creep = dem::BondCreep::maxwell;
+    p.bonds.contactViscosity = nu;
+    dem::System s(p);
+    std::vector<dem::GrainInit> grains(4);
+    for (int i = 0; i < 4; ++i)
+    {
+        grains[i].radius = R;
+        grains[i].density = rhoIce;
+        grains[i].position = {5 * R, 5 * R, (2 * i + 1) * R};
+        grains[i].flag = i == 0 ? dem::GrainFlag::fixed : dem::GrainFlag::translationOnly;
+    }
+    s.addGrains(grains);
+    s.addBonds({{0, 1, rb}, {1, 2, rb}, {2, 3, rb}});
+    s.step(5000);
+    const double x0 = s.grains().displacement[9], t0 = s.time();
+    s.step(5000);
+    const dem::GrainData after = s.grains();
+    const double rate = (after.displacement[9] - x0) / (s.time() - t0);
+    const double weight = after.mass[1] * g;
+    const double predicted = 2 * R * weight * (3 + 2 + 1) / (area * nu);
+    const dem::BondData b = s.bonds();
+    std::printf("  top grain %.9e m/s (Maxwell chain %.9e); S_x %.6e %.6e %.6e N (m g %.6e)\n",
+                rate, predicted, b.shearForce[0], b.shearForce[3], b.shearForce[6], weight);
+    EXPECT_LT(relative(rate, predicted), 1e-4);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_LT(relative(b.shearForce[3 * k], (3 - k) * weight), 1e-4);
 }
 
 DEM_TEST_ON_ALL_BACKENDS(BondedGrains);
