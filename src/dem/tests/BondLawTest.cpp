@@ -502,9 +502,9 @@ TEST(BondLaw, DashpotsAreFractionsOfCritical)
 
 TEST(BondLaw, ZeroStepEvaluatesWithoutChangingTheState)
 {
-    // dt = 0 (the engine's loads of freshly added or imported grains): the loads of the state
-    // as it is, the state untouched bit for bit, whatever the mechanisms (a restart then
-    // continues as the uninterrupted run).
+    // dt = 0 (the engine's loads after grains were added): the loads of the state as it is,
+    // the state untouched bit for bit, whatever the mechanisms (bonds present when grains are
+    // added mid-run keep their state exactly).
     BondParameters p = elastic();
     p.creep = dem::BondCreep::maxwell;
     p.contactViscosity = 1e3;

@@ -5,9 +5,12 @@
 // and at dt >> tau; tensile rupture at sigma_ice(T) A; the softening sequence of r_b; a grain
 // resting on a bond under gravity sintering at constant load; a bonded column under a
 // stress-controlled lid creeping at the rate of the compressive creep law for bonds in series;
-// a chain of Maxwell elements creeping sideways under its own weight.
+// a chain of Maxwell elements creeping sideways under its own weight; a restart with every
+// mechanism on continues bit for bit.
 // The evaluator's closed forms are derived in doc/EQUATIONS.md section 10.
 #include "CapsuleTestSupport.h"
+
+#include <cstring>
 
 using namespace demTest;
 using Eigen::Vector3d;
@@ -381,6 +384,66 @@ TEST_P(BondedGrains, MaxwellChainCreepsUnderItsWeight)
     EXPECT_LT(relative(rate, predicted), 1e-4);
     for (int k = 0; k < 3; ++k)
         EXPECT_LT(relative(b.shearForce[3 * k], (3 - k) * weight), 1e-4);
+}
+
+TEST_P(BondedGrains, RestartWithEveryMechanismContinuesBitForBit)
+{
+    // Every mechanism on (Maxwell creep, compressive creep, sintering, strength with
+    // softening): a fixed capsule, a driven sphere pressing into it, sliding and spinning, and
+    // a free sphere bonded to that one. Export, continue; import into a fresh System and
+    // continue: bonds (including the onset radius and softening flag the strength check
+    // reads) and grains bit for bit.
+    dem::Parameters p = bondedParameters(parameters());
+    p.bonds.creep = dem::BondCreep::maxwell;
+    p.bonds.contactViscosity = 1e3;
+    p.bonds.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
+    p.bonds.creepPrefactor = 40.0;
+    p.bonds.sintering = dem::BondSintering::pressureSintering;
+    p.bonds.strength = dem::BondStrength::constant;
+    p.bonds.tensileStrength = p.bonds.shearStrength = 1e3;
+    p.bonds.softeningRatio = 0.01;
+    p.bonds.normalDampingRatio = p.bonds.shearDampingRatio = 0.3;
+    auto make = [&]
+    {
+        dem::System s(p);
+        dem::GrainInit a, b, c;
+        a.radius = b.radius = c.radius = R;
+        a.density = b.density = c.density = rhoIce;
+        a.coreHalfLength = h;
+        a.orientation = rotation(Vector3d(1, 1, 0), 1.0);
+        a.flag = dem::GrainFlag::fixed;
+        b.position = {0.3 * R, 0.2 * R, 2 * R};
+        b.flag = dem::GrainFlag::driven;
+        c.position = {0.3 * R, 0.2 * R, 4 * R};
+        s.addGrains({a, b, c});
+        s.setGrainVelocities({1}, {1e-3, -2e-3, -1e-3}, {5.0, -3.0, 2.0});
+        s.addBonds({{0, 1, rb}, {1, 2, rb}});
+        return s;
+    };
+    dem::System original = make();
+    original.step(300);
+    const dem::SystemState state = original.exportState();
+    original.step(300);
+    dem::System restarted(p);
+    restarted.importState(state);
+    restarted.step(300);
+    const dem::BondData a = original.bonds(), b = restarted.bonds();
+    std::printf("  %zu bonds; r_b %.9e %.9e m, softening %d %d\n", a.first.size(), a.patchRadius[0],
+                a.patchRadius[1], int(a.softening[0]), int(a.softening[1]));
+    ASSERT_EQ(a.first.size(), 2u);
+    EXPECT_TRUE(a.softening[0] != 0 || a.softening[1] != 0); // the strength check ran
+    const auto identical = [](const std::vector<double>& x, const std::vector<double>& y)
+    { return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * 8) == 0; };
+    EXPECT_TRUE(identical(a.patchRadius, b.patchRadius));
+    EXPECT_TRUE(identical(a.normalForce, b.normalForce));
+    EXPECT_TRUE(identical(a.shearForce, b.shearForce));
+    EXPECT_TRUE(identical(a.twistMoment, b.twistMoment));
+    EXPECT_TRUE(identical(a.bendMoment, b.bendMoment));
+    EXPECT_TRUE(identical(a.age, b.age));
+    const dem::GrainData ga = original.grains(), gb = restarted.grains();
+    EXPECT_TRUE(identical(ga.position, gb.position));
+    EXPECT_TRUE(identical(ga.velocity, gb.velocity));
+    EXPECT_TRUE(identical(ga.angularVelocity, gb.angularVelocity));
 }
 
 DEM_TEST_ON_ALL_BACKENDS(BondedGrains);

@@ -90,7 +90,8 @@ struct BondLaw
     //- Advance state s over one step dt with the grains' motion and return the loads. Sets
     //- s.broken when the bond breaks (its loads this step are then zero). dt = 0 evaluates
     //- the loads of s as it is and leaves s untouched, bit for bit (the engine's loads of
-    //- freshly added or imported grains: a restart then continues as the run did).
+    //- freshly added grains: bonds already present, when grains are added mid-run, keep their
+    //- state exactly, whatever the mechanisms).
     DEM_HD BondLoads advance(BondState& s, const BondGeometry& g, const BondMotion& m) const
     {
         BondLoads loads{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
