@@ -66,6 +66,7 @@ struct BondLaw
     PowerLawCreep compressiveCreep;
     IceStrength strength;
     Sintering sintering;
+    double normalDashpot = 0.0, shearDashpot = 0.0; //!< 2 zeta_n, 2 zeta_s sqrt(k_se/k_ne)
 
     //- Relaxation times of grain-boundary creep: tau_shear = tau_twist = nu_s / (k_se/k_ne E),
     //- tau_bend = nu_s / E (the viscosity over the patch's modulus in that mode).
@@ -84,6 +85,9 @@ struct BondLaw
         law.compressiveCreep = PowerLawCreep::make(parameters, timeStep);
         law.strength = IceStrength::make(parameters);
         law.sintering = Sintering::make(parameters, timeStep);
+        law.normalDashpot = 2.0 * parameters.normalDampingRatio;
+        law.shearDashpot =
+            2.0 * parameters.shearDampingRatio * std::sqrt(parameters.shearToNormalStiffness);
         return law;
     }
 
@@ -101,25 +105,24 @@ struct BondLaw
         const double meanRadius = 0.5 * (g.radiusA + g.radiusB);
         const PatchIncrement du = patchIncrement(n, g.offsetA, g.offsetB, m.velocityA, m.velocityB,
                                                  m.omegaA, m.omegaB, dt);
-        if (dt > 0.0 && !evolve(s, g, m, du, meanRadius))
+        PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
+                                                p.shearToNormalStiffness, meanRadius);
+        if (dt > 0.0 && !evolve(s, g, m, du, meanRadius, patch))
         {
             s.broken = true;
             return loads;
         }
 
-        // The loads: the elastic loads and the dashpots of the patch as it is now.
-        const PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
-                                                      p.shearToNormalStiffness, meanRadius);
+        // The loads: the elastic loads and the dashpots of the patch as it is now,
+        // c = 2 zeta sqrt(m* k A) (k_se A = (k_se/k_ne) k_ne A: one root for both).
         const double inverseMassSum = m.inverseMassA + m.inverseMassB;
         // Two immovable grains (no inverse mass): no dashpot rather than an infinite one.
         const double reducedMass = inverseMassSum > 0.0 ? 1.0 / inverseMassSum : 0.0;
-        const double normalDamping = 2.0 * p.normalDampingRatio *
-                                     std::sqrt(reducedMass * patch.normalStiffness * patch.area);
-        const double shearDamping =
-            2.0 * p.shearDampingRatio * std::sqrt(reducedMass * patch.shearStiffness * patch.area);
+        const double root = std::sqrt(reducedMass * patch.normalStiffness * patch.area);
         const double normalSpeed = du.velocity.dot(n);
-        const Vector3d force = (s.normalForce + normalDamping * normalSpeed) * n + s.shearForce +
-                               shearDamping * (du.velocity - normalSpeed * n);
+        const Vector3d force = (s.normalForce + normalDashpot * root * normalSpeed) * n +
+                               s.shearForce +
+                               (shearDashpot * root) * (du.velocity - normalSpeed * n);
         const Vector3d moment = s.twistMoment * n + s.bendMoment;
         loads.forceOnA = force;
         loads.torqueOnA = g.offsetA.cross(force) + moment;
@@ -128,9 +131,10 @@ struct BondLaw
     }
 
 private:
-    //- One step of the state: returns false when the bond breaks.
+    //- One step of the state: returns false when the bond breaks. patch: the section at the
+    //- start of the step, on return the section at its end.
     DEM_HD bool evolve(BondState& s, const BondGeometry& g, const BondMotion& m,
-                       const PatchIncrement& du, double meanRadius) const
+                       const PatchIncrement& du, double meanRadius, PatchSection& patch) const
     {
         const Vector3d& n = g.normal;
         // 1. Stored in-plane loads into the current plane, turning with the pair's mean rotation.
@@ -139,8 +143,6 @@ private:
         s.bendMoment = rotateIntoPlane(s.bendMoment, n, theta);
 
         // 2. Elastic increments with the patch at the start of the step, and creep.
-        PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
-                                                p.shearToNormalStiffness, meanRadius);
         s.normalForce += patch.normalStiffness * patch.area * du.normal;
         s.normalForce = compressiveCreep.relax(s.normalForce, patch.area);
         s.shearForce =
@@ -151,19 +153,20 @@ private:
             s.bendMoment, Vector3d(patch.normalStiffness * patch.bendInertia * du.bend));
 
         // 3. Sintering grows an intact patch under compression (new material, no load).
-        if (!s.softening)
+        if (sintering.on && !s.softening)
         {
             const double reducedRadius = g.radiusA * g.radiusB / (g.radiusA + g.radiusB);
             s.patchRadius = sintering.grow(s.patchRadius, s.normalForce, reducedRadius);
-            s.onsetRadius = s.patchRadius;
+            patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
+                                       meanRadius);
         }
+        if (!s.softening)
+            s.onsetRadius = s.patchRadius;
         s.age += dt;
 
         // 4. Strength: past it, the patch shrinks along the softening branch or breaks.
         if (!strength.on)
             return true;
-        patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
-                                   meanRadius);
         const double x =
             strength.loadRatio(s.normalForce, s.shearForce, s.twistMoment, s.bendMoment,
                                patch.radius, patch.area, patch.bendInertia, patch.twistInertia);
@@ -183,6 +186,8 @@ private:
             s.twistMoment *= inertiaRatio;
             s.bendMoment *= inertiaRatio;
             s.patchRadius = target;
+            patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
+                                       meanRadius);
         }
         return true;
     }
