@@ -11,6 +11,7 @@
 #include "CapsuleTestSupport.h"
 
 #include <cstring>
+#include <functional>
 
 using namespace demTest;
 using Eigen::Vector3d;
@@ -444,6 +445,67 @@ TEST_P(BondedGrains, RestartWithEveryMechanismContinuesBitForBit)
     EXPECT_TRUE(identical(ga.position, gb.position));
     EXPECT_TRUE(identical(ga.velocity, gb.velocity));
     EXPECT_TRUE(identical(ga.angularVelocity, gb.angularVelocity));
+}
+
+TEST_P(BondedGrains, BadBondLawConstantsAreNamed)
+{
+    // Each mechanism's constants are checked when it is on; the message names the parameter,
+    // its value and the valid range.
+    struct Case
+    {
+        std::function<void(dem::BondParameters&)> set;
+        const char* expected;
+    };
+    const std::vector<Case> cases = {
+        {[](dem::BondParameters& b) { b.youngsModulus = 0; }, "bonds.youngsModulus = 0"},
+        {[](dem::BondParameters& b) { b.temperature = 5; }, "bonds.temperature = 5"},
+        {[](dem::BondParameters& b) { b.normalDampingRatio = 1.5; },
+         "bonds.normalDampingRatio = 1.5"},
+        {[](dem::BondParameters& b) { b.creep = dem::BondCreep::maxwell; },
+         "bonds.contactViscosity = 0"},
+        {[](dem::BondParameters& b)
+         {
+             b.sintering = dem::BondSintering::pressureSintering;
+             b.creepPrefactor = -1;
+         },
+         "bonds.creepPrefactor = -1"},
+        {[](dem::BondParameters& b)
+         {
+             b.strength = dem::BondStrength::constant;
+             b.tensileStrength = -1;
+         },
+         "bonds.tensileStrength = -1"},
+        {[](dem::BondParameters& b)
+         {
+             b.strength = dem::BondStrength::iceTemperature;
+             b.softeningRatio = 0;
+         },
+         "bonds.softeningRatio = 0"},
+        {[](dem::BondParameters& b)
+         {
+             b.strength = dem::BondStrength::iceTemperature;
+             b.brokenFraction = 1;
+         },
+         "bonds.brokenFraction = 1"}};
+    for (const Case& c : cases)
+    {
+        dem::Parameters p = bondedParameters(parameters());
+        c.set(p.bonds);
+        try
+        {
+            dem::System s(p);
+            ADD_FAILURE() << "not refused: " << c.expected;
+        }
+        catch (const dem::Error& e)
+        {
+            std::printf("  refused: %s\n", e.what());
+            EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
+        }
+    }
+    // Off mechanisms are not checked: no contact viscosity needed without creep.
+    dem::Parameters p = bondedParameters(parameters());
+    p.bonds.contactViscosity = -1;
+    EXPECT_NO_THROW(dem::System s(p));
 }
 
 DEM_TEST_ON_ALL_BACKENDS(BondedGrains);
