@@ -38,7 +38,7 @@ void usage()
                  "contacts stiffened stage by stage (untimed); --write-packing saves it "
                  "(x y z r h qw qx qy qz per capsule) for --packing\n"
                  "--bonds: bonds on (frozen on contact, checked every 10 steps; elastic patch "
-                 "as stiff as the contacts at most, Maxwell creep)\n";
+                 "at most as stiff as the contacts, Maxwell creep)\n";
 }
 
 //- "NXxNY" (e.g. 10x1) as two positive counts.
@@ -193,8 +193,9 @@ int main(int argc, char** argv)
         const double bed = dem::bedSolidFraction(packing, interior);
         if (bonds)
         {
-            // The largest bond (r_b^2 = 0.09375 r^2) as stiff as a contact: k_ne pi r_b^2 with
-            // k_ne = E / (2 r) is k_n, so the time step stays as stable as without bonds.
+            // The stiffest bond formation may make (r_b^2 = 0.09375 r^2, k_ne A = E pi 0.09375
+            // r / 2, the critical step's bound) as stiff as a contact: the benchmark's time step
+            // stays allowed.
             double radius = 0.0;
             for (const dem::GrainInit& g : packing.grains)
                 radius = std::max(radius, g.radius);

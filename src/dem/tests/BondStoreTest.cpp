@@ -451,6 +451,37 @@ TEST_P(BondStore, BadBondsAreRefusedByName)
     refused([&] { u.importState(s.exportState()); }, "the state holds bonds");
 }
 
+TEST_P(BondStore, StiffBondsLowerTheCriticalTimeStep)
+{
+    // A bond as wide as the grains (r_b = r = 1 cm) with E = 1e9 Pa: k_ne A = E / (2 r) pi r^2
+    // = 1.571e7 N/m, stiffer than the contacts (1e6 N/m), so it sets sqrt(m / k_max); with
+    // formation on, the stiffest bond it may add, E pi f_max r / 2, counts before any forms.
+    dem::Parameters p = bondParameters();
+    p.bonds.youngsModulus = 1e9;
+    dem::System s(p);
+    dem::GrainInit a, b;
+    a.position = {0.5, 0.5, 0.5};
+    b.position = {0.52, 0.5, 0.5};
+    s.addGrains({a, b});
+    const double mass = 2600 * sphereVolume(0.01);
+    const double contactStep = std::sqrt(mass / 1e6);
+    EXPECT_NEAR(s.criticalTimeStep(), contactStep, 1e-12 * contactStep); // no bond yet
+    s.addBonds({{0, 1, 0.01}});
+    const double bondStep = std::sqrt(mass / (1e9 / 0.02 * M_PI * 1e-4));
+    std::printf("  critical step %.6e s with the bond (%.6e s by the closed form), %.6e s "
+                "without\n",
+                s.criticalTimeStep(), bondStep, contactStep);
+    EXPECT_NEAR(s.criticalTimeStep(), bondStep, 1e-12 * bondStep);
+    s.setTimeStep(0.5 * (0.2 * bondStep + 0.2 * contactStep)); // allowed without the bond only
+    EXPECT_THROW(s.step(1), dem::Error);
+    p.bonds.formation = dem::BondFormation::frozenOnContact;
+    dem::System t(p);
+    t.addGrains({a, b});
+    const double formationStep =
+        std::sqrt(mass / (0.5 * M_PI * 1e9 * p.bonds.areaFraction[1] * 0.01));
+    EXPECT_NEAR(t.criticalTimeStep(), formationStep, 1e-12 * formationStep);
+}
+
 TEST_P(BondStore, DrivenGrainsKeepTheirVelocityAndSpin)
 {
     // A driven capsule under gravity ploughing through a resting sphere: its velocity and

@@ -208,6 +208,28 @@ BondData EngineImpl<Exec>::bonds() const
 }
 
 template <class Exec>
+double EngineImpl<Exec>::maximumBondStiffness() const
+{
+    const BondParameters& b = params_.bonds;
+    if (!b.enabled)
+        return 0.0;
+    // Formation's largest: r_b^2 = f_max r_min^2 and Rbar >= r_min give
+    // k_ne A <= E pi f_max r_min / 2 <= E pi f_max R_max / 2.
+    double largest = b.formation == BondFormation::frozenOnContact
+                         ? 0.5 * M_PI * b.youngsModulus * b.areaFraction[1] * maximumRadius()
+                         : 0.0;
+    const int count = bonds_.count();
+    if (count > 0)
+    {
+        EngineImpl& e = self();
+        largest = std::max(largest,
+                           exec_.maxOf(count, BondStiffnessOf{e.grains_.real(fRadius),
+                                                              e.bonds_.view(), b.youngsModulus}));
+    }
+    return largest;
+}
+
+template <class Exec>
 BondCounts EngineImpl<Exec>::bondCounts() const
 {
     BondCounts out;

@@ -169,6 +169,21 @@ struct BondGather
     }
 };
 
+//- A bond's normal stiffness k_ne A = E / (2 Rbar) pi r_b^2 (the critical time step).
+struct BondStiffnessOf
+{
+    const double* radius;
+    BondView bonds;
+    double youngsModulus;
+
+    DEM_HD double operator()(int b) const
+    {
+        const double meanRadius = 0.5 * (radius[bonds.grainA[b]] + radius[bonds.grainB[b]]);
+        const double rb = bonds.state[long(kBondPatchRadius) * bonds.count + b];
+        return youngsModulus / (2.0 * meanRadius) * (3.14159265358979323846 * rb * rb);
+    }
+};
+
 //- The sort key of a bond: its grains' internal indices (A, B) in one 64-bit integer.
 struct BondKey
 {
