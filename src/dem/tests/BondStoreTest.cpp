@@ -411,6 +411,48 @@ TEST_P(BondStore, BrokenBondIsRemovedAndTheContactLawReturns)
     EXPECT_NEAR(g.force[0], -1e6 * overlap, 1e-9 * 1e6 * overlap);
 }
 
+TEST_P(BondStore, ThreadCountChangesNoBit)
+{
+    // A lattice of 4800 spheres frozen on contact (about 13,000 bonds: the per-grain and
+    // per-bond passes run on all threads above 4096 items) settling on a wall under gravity,
+    // with a skin small enough for rebuilds: 1 and 2 threads give the same bits (each bond is
+    // evaluated alone, each grain sums its pairs and bonds in a fixed order).
+    auto run = [&](int threads)
+    {
+        dem::Parameters p = bondParameters();
+        p.threads = threads;
+        p.gravity = {0.0, 0.0, -9.81};
+        p.neighbourSkin = 2e-5;
+        p.bonds.formation = dem::BondFormation::frozenOnContact;
+        p.bonds.formationInterval = 7;
+        p.bonds.normalDampingRatio = 0.3;
+        dem::System s(p);
+        std::vector<dem::GrainInit> grains;
+        for (int i = 0; i < 20; ++i)
+            for (int j = 0; j < 20; ++j)
+                for (int k = 0; k < 12; ++k)
+                {
+                    dem::GrainInit g;
+                    g.radius = (i + j + k) % 2 ? 0.0098 : 0.01;
+                    g.position = {0.1 + 0.0197 * i, 0.1 + 0.0197 * j, 0.0098 + 0.0197 * k};
+                    grains.push_back(g);
+                }
+        s.addGrains(grains);
+        s.addWall(dem::WallSpec());
+        s.step(60);
+        return std::make_pair(s.grains(), std::make_pair(s.bonds(), s.neighbourRebuildCount()));
+    };
+    const auto one = run(1), two = run(2);
+    std::printf("  %zu bonds, %zu rebuilds\n", one.second.first.first.size(), one.second.second);
+    EXPECT_GT(one.second.first.first.size(), 4096u);
+    EXPECT_GT(one.second.second, 1u);
+    EXPECT_TRUE(identical(one.first.position, two.first.position));
+    EXPECT_TRUE(identical(one.first.velocity, two.first.velocity));
+    EXPECT_TRUE(identical(one.first.force, two.first.force));
+    EXPECT_TRUE(identical(one.first.torque, two.first.torque));
+    expectIdenticalBonds(one.second.first, two.second.first);
+}
+
 TEST_P(BondStore, BadBondsAreRefusedByName)
 {
     auto refused = [](const std::function<void()>& call, const std::string& expected)
