@@ -21,7 +21,7 @@ inline namespace DEM_KERNEL_NS
 {
 
 //- A bond's stored state (BondState) as component-blocked arrays: component c of bond b at
-//- c * count + b. A new BondState member: a component here, in loadBondState/storeBondState
+//- c * count + b. A new BondState member: a component here, in BondView::load and store
 //- and in BondStorage's table (export, import and re-sorting follow).
 enum BondStateComponent
 {
