@@ -561,6 +561,19 @@ TEST_P(BondStore, DrivenGrainsKeepTheirVelocityAndSpin)
         EXPECT_NEAR(g.position[d], c.position[d] + v[d] * t, 1e-12);
     }
     EXPECT_LT(q.angularDistance(expected), 1e-11);
+
+    // A free capsule given omega by setGrainVelocities turns at it: its angular momentum is
+    // R I R^T omega (read back as omega = R I^-1 R^T L, to round-off of the two products).
+    dem::System f(p);
+    dem::GrainInit free = c;
+    free.flag = dem::GrainFlag::free;
+    free.orientation = rotation(Eigen::Vector3d(1.0, 2.0, 0.5), 0.7);
+    f.addGrain(free);
+    f.setGrainVelocities({0}, v, omega);
+    f.step(0);
+    const dem::GrainData h = f.grains();
+    for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(h.angularVelocity[d], omega[d], 1e-12 * 31.7); // |omega| = 31.6 rad/s
 }
 
 DEM_TEST_ON_ALL_BACKENDS(BondStore);
