@@ -76,6 +76,7 @@ dem::Parameters Foam::demCloud::readParameters() const
         dict.found("wallContact")
       ? contactLaw::New(dict.subDict("wallContact"))->material()
       : p.grainGrain;
+    p.bonds = bonds_.parameters();
 
     // The periodic box is the mesh's horizontal extent
     const dem::UniformGrid& g3 = grid_.grid();
