@@ -85,7 +85,10 @@ Foam::scalar Foam::inputChecks::getInRange
 
     if (!(value >= lower && value <= upper))
     {
+        // Ten digits: limits as a user writes them (-273.15, not
+        // -273.14999999999998 at a case's writePrecision 17)
         OStringStream rule;
+        rule.precision(10);
         if (upper < GREAT)
         {
             rule<< "must lie in [" << lower << ", " << upper << "]";

@@ -5,6 +5,7 @@
 
 #include "frozenOnContact.H"
 #include "inputChecks.H"
+#include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -45,10 +46,14 @@ Foam::bondFormationModels::frozenOnContact::frozenOnContact(const dictionary& di
        && areaFraction_[1] <= 1)
     )
     {
+        // Ten digits: the pair as the user wrote it
+        OStringStream found;
+        found.precision(10);
+        found<< "(" << areaFraction_[0] << " " << areaFraction_[1] << ")";
         FatalIOErrorInFunction(dict)
             << "Entry 'areaFraction' in " << dict.name() << " must be"
-            << " (min max) with 0 < min <= max <= 1, found " << areaFraction_
-            << nl << exit(FatalIOError);
+            << " (min max) with 0 < min <= max <= 1, found "
+            << found.str().c_str() << nl << exit(FatalIOError);
     }
     if (interval_ < 1)
     {
