@@ -6,7 +6,7 @@ under a normal stress sigma0 = 1e4 Pa) settled to rest under gravity."""
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.foamfiles import grain_files, read_columns, read_vtp
+from darcydem.foamfiles import grain_files, read_columns, read_vtp, read_vtp_lines
 
 DEM = "constant/demProperties"
 G = 9.81
@@ -98,3 +98,77 @@ def test_lid_and_base_carry_the_load_of_a_packing_at_rest():
     for column in ("bondsIntact", "bondsFormed", "bondsBroken", "bondsApart",
                    "meanPatchRadius"):
         assert np.all(packing[column] == 0)
+
+
+def minimum_image(d, box):
+    """Differences d (n, 3) to their nearest periodic images in x and y."""
+    d = d.copy()
+    for k in (0, 1):
+        d[:, k] -= box[k] * np.round(d[:, k] / box[k])
+    return d
+
+
+def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
+    """Grains falling in the column freeze together where they touch
+    (formation frozenOnContact, bonds that never break). At every write
+    time the bonds' .vtp (read by VTK's own reader, listed in
+    bonds.vtp.series) holds one line per intact bond counted by
+    packingStatistics; its lines run from the first grain's centre to the
+    nearest image of the second's (round-off of the coordinates, 1e-12 of
+    the box); every patch radius is the one the formation drew from
+    areaFraction (r_b^2 / r_min^2 in [0.03125, 0.09375], round-off); the
+    counts conserve bonds (intact = formed - broken, no breakage: broken =
+    0); bondsApart is the number of bonds whose spheres do not touch and
+    the coordination number 2 (touching pairs + apart) / grains, with the
+    touching pairs from the grains' contactCount."""
+    c = Case("grainColumn", "bonded_column")
+    c.set("system/controlDict", "endTime", 0.4)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 100)
+    c.set("system/controlDict", "functions", FUNCTIONS)
+    c.set(DEM, "viscousDrag", DRAG)
+    # E: a bond of the mean patch (r_b^2 = r^2/16) about as stiff as the
+    # contacts (k_ne pi r_b^2 = E pi r / 32 ~ 9e5 N/m for r = 9 mm)
+    c.set(DEM, "bonds", "{ youngsModulus 1e9; normalDampingRatio 0.2; shearDampingRatio 0.2;"
+                        " strength { type none; } formation { type frozenOnContact;"
+                        " areaFraction (0.03125 0.09375); interval 10; seed 3; } }")
+    c.run("blockMesh")
+    c.run("demFoam")
+
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    np.testing.assert_array_equal(packing["bondsIntact"],
+                                  packing["bondsFormed"] - packing["bondsBroken"])
+    assert np.all(packing["bondsBroken"] == 0)
+    box = np.array([0.1, 0.1])
+
+    bond_files = grain_files(c.path, "bonds")
+    grain_times = dict(grain_files(c.path))
+    assert [t for t, _ in bond_files] == sorted(grain_times)
+    for t, path in bond_files:
+        bonds = read_vtp_lines(path)
+        grains = read_vtp(grain_times[t])
+        row = np.flatnonzero(np.isclose(packing["time"], t, rtol=0, atol=1e-9))[-1]
+        n = len(bonds["lines"])
+        assert n == packing["bondsIntact"][row]
+        if n == 0:
+            continue
+        a, b = bonds["first"], bonds["second"]
+        ends = bonds["points"][bonds["lines"]]
+        x = grains["position"]
+        np.testing.assert_allclose(ends[:, 0], x[a], rtol=0, atol=1e-12 * box[0])
+        np.testing.assert_allclose(ends[:, 1] - ends[:, 0], minimum_image(x[b] - x[a], box),
+                                   rtol=0, atol=1e-12 * box[0])
+        r = grains["radius"]
+        fraction = bonds["patchRadius"]**2 / np.minimum(r[a], r[b])**2
+        assert fraction.min() >= 0.03125 * (1 - 1e-12)
+        assert fraction.max() <= 0.09375 * (1 + 1e-12)
+        np.testing.assert_allclose(packing["meanPatchRadius"][row],
+                                   bonds["patchRadius"].mean(), rtol=1e-12)
+        apart = np.sum(np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1) > r[a] + r[b])
+        assert packing["bondsApart"][row] == apart
+        touching = grains["contactCount"].sum() / 2
+        assert packing["coordinationNumber"][row] == 2 * (touching + apart) / len(r)
+        print(f"t = {t} s: {n} bonds, {apart} apart, r_b^2/r_min^2 in "
+              f"[{fraction.min():.5f}, {fraction.max():.5f}], coordination number "
+              f"{packing['coordinationNumber'][row]:.3f}")
+    assert packing["bondsIntact"][-1] > 0
