@@ -102,6 +102,15 @@ Foam::bondProperties::bondProperties(const dictionary& demProperties)
 {
     if (!demProperties.found("bonds"))
     {
+        if
+        (
+            demProperties.isDict("output")
+         && demProperties.subDict("output").getOrDefault<bool>("bonds", false)
+        )
+        {
+            Info<< "    output bonds yes: no bonds to write (no 'bonds' entry in "
+                << demProperties.name() << ")" << endl;
+        }
         return;
     }
     if (!demProperties.isDict("bonds"))
