@@ -232,6 +232,61 @@ TEST_P(WallAxes, BadWallsAreRefusedWithTheValidChoices)
     EXPECT_NE(message(w).find("at most 6 walls"), std::string::npos) << message(w);
 }
 
+// A box closed in x (walls there, not periodic): the deposit mirrors at the x sides, so a
+// grain in the first half cell deposits all of its volume into the first column (a periodic
+// wrap would put a share into the last one), and grains along both x sides, spheres and
+// capsules, deposit their whole volume (round-off).
+TEST_P(WallAxes, DepositInBoxClosedInXMirrorsAtItsSides)
+{
+    const double box = 0.2, height = 0.15;
+    dem::Parameters p = parameters();
+    p.periodic = {false, true};
+    p.boxUpper = {box, box};
+    dem::UniformGrid grid;
+    grid.n = {5, 4, 6};
+    grid.spacing = {box / 5, box / 4, height / 6};
+    grid.periodic = {false, true, false};
+    const std::size_t cells = std::size_t(grid.n[0] * grid.n[1] * grid.n[2]);
+    {
+        dem::System s(p);
+        dem::GrainInit grain;
+        grain.radius = 0.006;
+        grain.position = {0.3 * grid.spacing[0], 1.5 * grid.spacing[1], 2.5 * grid.spacing[2]};
+        s.addGrains({grain});
+        std::vector<double> solid(cells), porosity(cells);
+        s.deposit(grid, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+        const std::size_t first = 0 + 5 * (1 + 4 * 2);
+        std::printf("  grain at 0.3 dx: first column holds %.17g of its volume\n",
+                    solid[first] / sphereVolume(grain.radius));
+        EXPECT_NEAR(solid[first] / sphereVolume(grain.radius), 1.0, 1e-14);
+    }
+    dem::System s(p);
+    std::vector<dem::GrainInit> grains;
+    for (int i = 0; i < 40; ++i)
+    {
+        dem::GrainInit g;
+        g.radius = 0.005;
+        const double x = g.radius + 0.0003 * i;
+        g.position = {i % 2 ? x : box - x, 0.005 * i, 0.01 + 0.003 * i};
+        if (i % 3 == 0)
+        {
+            g.coreHalfLength = 0.004; // along z: parallel to the x walls
+        }
+        grains.push_back(g);
+    }
+    s.addGrains(grains);
+    std::vector<double> solid(cells), porosity(cells);
+    s.deposit(grid, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+    double volume = 0, deposited = 0;
+    for (const dem::GrainInit& g : grains)
+        volume += sphereVolume(g.radius) + M_PI * g.radius * g.radius * 2 * g.coreHalfLength;
+    for (double v : solid)
+        deposited += v;
+    std::printf("  grains along both x sides: deposited / volume - 1 = %.2e\n",
+                deposited / volume - 1);
+    EXPECT_NEAR(deposited / volume, 1.0, 1e-13); // 40 grains' round-off
+}
+
 // A state written when grains held wall records for 4 walls (no 'walls.layout', 3 wall
 // integers, records of 4 walls, a capsule's second-end bits at 4 + w) restarts into today's
 // layout and continues bit-identically: horizontal capsules resting on both ends on a floor
