@@ -1,6 +1,7 @@
 // WallAxisTest.cpp
 // Walls on any axis, free walls and gravity changes: a grain resting on an x (y) wall under
-// gravity along x (y) loads it with its weight; a free lid falls freely, lands on a grain and
+// gravity along x (y) loads it with its weight, a capsule on both ends on the sixth wall of a
+// closed box too; a free lid falls freely, lands on a grain and
 // rests on it with its weight; a stress-controlled x wall takes sigma0 times the box's y length
 // times the gap between the z walls; under a linear gravity ramp a grain and a free wall follow
 // velocity Verlet's closed form; bad walls are refused with the valid choices; a state of the
@@ -77,6 +78,42 @@ TEST_P(WallAxes, GrainRestsOnSideWallUnderSideGravity)
         EXPECT_NEAR(measuredOverlap / overlap, 1.0, 1e-6);
         EXPECT_EQ(s.wall(0).spec.axis, axis);
     }
+}
+
+// A capsule lying along x on the sixth wall of a closed box (a lower y wall, gravity -y)
+// rests on both core ends: the wall carries m g, each end m g / 2 at overlap m g / (2 k);
+// its end contacts use the highest wall-contact bits (kMaxWalls = 6).
+TEST_P(WallAxes, CapsuleRestsOnBothEndsOnTheSixthWall)
+{
+    const double r = 0.01, h = 0.015, g = 9.81;
+    dem::Parameters p = dampedParameters(0);
+    p.periodic = {false, false};
+    p.gravity = {0, -g, 0};
+    dem::System s(p);
+    dem::GrainInit capsule;
+    capsule.radius = r;
+    capsule.coreHalfLength = h;
+    capsule.orientation = {std::sqrt(0.5), 0.0, std::sqrt(0.5), 0.0}; // body z along x
+    capsule.position = {0.5, r, 0.5};
+    s.addGrains({capsule});
+    s.addWall(wallOn(2, dem::WallSpec::Side::lower, 0.0));
+    s.addWall(wallOn(2, dem::WallSpec::Side::upper, 1.0));
+    s.addWall(wallOn(0, dem::WallSpec::Side::lower, 0.0));
+    s.addWall(wallOn(0, dem::WallSpec::Side::upper, 1.0));
+    s.addWall(wallOn(1, dem::WallSpec::Side::upper, 1.0));
+    const int floor = s.addWall(wallOn(1, dem::WallSpec::Side::lower, 0.0));
+    s.step(int(0.05 / p.timeStep));
+    const dem::GrainData gd = s.grains();
+    const double m = gd.mass[0], k = p.grainWall.normalStiffness;
+    const double overlap = m * g / (2 * k);
+    std::printf("  capsule on wall %d: wall force / (m g) - 1 = %.2e, height error / overlap = "
+                "%.2e\n",
+                floor, s.wall(floor).grainForce / (-m * g) - 1,
+                (gd.position[1] - (r - overlap)) / overlap);
+    EXPECT_EQ(floor, 5);
+    EXPECT_NEAR(s.wall(floor).grainForce / (-m * g), 1.0, 1e-9); // at rest, as above
+    EXPECT_NEAR((gd.position[1] - (r - overlap)) / overlap, 0.0, 1e-6);
+    EXPECT_NEAR(gd.position[0], 0.5, 1e-9); // symmetric: no drift along the wall
 }
 
 // A free lid of mass M released above a grain on the floor falls freely (velocity Verlet is
