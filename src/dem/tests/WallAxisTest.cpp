@@ -1,11 +1,11 @@
 // WallAxisTest.cpp
 // Walls on any axis, free walls and gravity changes: a grain resting on an x (y) wall under
-// gravity along x (y) loads it with its weight, a capsule on both ends on the sixth wall of a
-// closed box too; a free lid falls freely, lands on a grain and
-// rests on it with its weight; a stress-controlled x wall takes sigma0 times the box's y length
-// times the gap between the z walls; under a linear gravity ramp a grain and a free wall follow
-// velocity Verlet's closed form; bad walls are refused with the valid choices; a state of the
-// 4-wall layout restarts.
+// gravity along x (y) loads it with its weight, and so does a capsule on both ends on the
+// sixth wall of a closed box; a free lid falls freely, lands on a grain and rests on it with
+// its weight; a stress-controlled x wall takes sigma0 times the box's y length times the gap
+// between the z walls; under a linear gravity ramp a grain and a free wall follow velocity
+// Verlet's closed form; the deposit mirrors at closed x sides; bad walls are refused with the
+// valid choices; a state of the 4-wall layout restarts.
 #include "TestSupport.h"
 
 #include <cstdio>
