@@ -122,7 +122,7 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
     the coordination number 2 (touching pairs + apart) / grains, with the
     touching pairs from the grains' contactCount."""
     c = Case("grainColumn", "bonded_column")
-    c.set("system/controlDict", "endTime", 0.4)
+    c.set("system/controlDict", "endTime", 0.2)
     c.set("system/controlDict", "deltaT", 1e-3)
     c.set("system/controlDict", "writeInterval", 100)
     c.set("system/controlDict", "functions", FUNCTIONS)
@@ -172,3 +172,84 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
               f"[{fraction.min():.5f}, {fraction.max():.5f}], coordination number "
               f"{packing['coordinationNumber'][row]:.3f}")
     assert packing["bondsIntact"][-1] > 0
+
+
+def write_layered_grains(path, seed=1):
+    """72 spheres of radius 4 to 4.5 mm in 6 layers of 3 x 4 inside
+    wallBox's walls (x in [0, 0.04], periodic y of 0.04), alternate layers
+    shifted by half a spacing in x, so that they settle into each other and
+    press on the side walls."""
+    rng = np.random.default_rng(seed)
+    with open(path, "w") as f:
+        f.write("# x y z r: 6 layers of 3 x 4 spheres, alternate layers shifted in x\n")
+        for k in range(6):
+            for i in range(3):
+                for j in range(4):
+                    x = 0.006 + 0.010 * i + (0.005 if k % 2 else 0.0)
+                    r = rng.uniform(0.004, 0.0045)
+                    f.write(f"{x:.6f} {0.005 + 0.010 * j:.6f} {0.006 + 0.010 * k:.6f} {r:.6f}\n")
+
+
+def test_free_lid_and_side_walls_in_balance():
+    """tests/cases/wallBox with 72 spheres: walls on x (0 and 0.04 m),
+    periodic y (0.04 m), a fixed base and a free lid of mass m under gravity
+    ramped from zero over 0.05 s, settled to rest with drag; the walls are
+    frictionless (the files hold normal forces only). Momentum
+    balance at rest (end of the run): the lid carries its weight (lid
+    stress m g / A, A the x-y area between the x walls), the base the lid's
+    and the grains' weight, and the x walls' forces cancel; tolerance as
+    for the stress lid above, the force the grains' remaining motion
+    carries. Areas by their definition at every row (round-off): a z wall
+    Ly (x_right - x_left), an x wall Ly (lid - base); density over the
+    volume between the six bounds."""
+    lid_mass, ly, drag = 0.05, 0.04, 0.1
+    c = Case("wallBox", "packing_free_lid")
+    write_layered_grains(c.file("0/grains"))
+    c.set("system/controlDict", "endTime", 0.5)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 500)
+    c.set("system/controlDict", "functions", FUNCTIONS)
+    c.set(DEM, "viscousDrag", drag)
+    c.set(DEM, "timeStep", 5e-6)     # 0.19 sqrt(m_min/k) for the 4 mm grains
+    # The files hold the walls' normal forces: frictional walls would take part of the
+    # weight by friction on the sides (Janssen) and of the side thrust on the base
+    for wall in ("bottom", "left", "right"):
+        c.set(DEM, f"walls/{wall}/frictional", "no")
+    c.run("blockMesh")
+    c.run("demFoam")
+    walls = read_columns(c.file("postProcessing/wallStress/0/wallStress.dat"))
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    assert list(walls) == ["time"] + [f"{w}_{q}" for w in ("bottom", "left", "right", "lid")
+                                      for q in ("position", "force", "stress")]
+
+    mass, volume = grain_masses(c)
+    t, vtp = grain_files(c.path)[-1]
+    grains = read_vtp(vtp)
+    speed = np.linalg.norm(grains["velocity"], axis=1)
+    bound = np.sum((np.sqrt(STIFFNESS * mass) + drag) * speed)
+    row = np.flatnonzero(np.isclose(walls["time"], t, rtol=0, atol=1e-9))[-1]
+    lid_error = walls["lid_force"][row] - lid_mass * G
+    base_error = walls["bottom_force"][row] + (lid_mass + mass.sum()) * G
+    side_error = walls["left_force"][row] + walls["right_force"][row]
+    print(f"t = {t} s: lid force {walls['lid_force'][row]:.9g} N (m g = {lid_mass * G:.9g}),"
+          f" lid stress {walls['lid_stress'][row]:.6g} Pa, base {walls['bottom_force'][row]:.9g}"
+          f" N, sides {walls['left_force'][row]:.4e} and {walls['right_force'][row]:.4e} N;"
+          f" errors {lid_error:.2e}, {base_error:.2e}, {side_error:.2e} N; bound {bound:.2e} N")
+    assert max(abs(lid_error), abs(base_error), abs(side_error)) < bound
+    assert bound < 1e-3 * lid_mass * G
+    assert walls["right_force"][row] > 100 * bound     # the sides do carry a load
+
+    width = walls["right_position"] - walls["left_position"]
+    height = walls["lid_position"] - walls["bottom_position"]
+    for wall in ("bottom", "lid"):
+        np.testing.assert_allclose(walls[f"{wall}_stress"] * ly * width,
+                                   walls[f"{wall}_force"], rtol=1e-12, atol=0)
+    for wall in ("left", "right"):
+        np.testing.assert_allclose(walls[f"{wall}_stress"] * ly * height,
+                                   walls[f"{wall}_force"], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(packing["density"], mass.sum() / (ly * width * height),
+                               rtol=1e-12)
+    np.testing.assert_allclose(packing["solidFraction"], volume.sum() / (ly * width * height),
+                               rtol=1e-12)
+    np.testing.assert_allclose(packing["strainRate"], -packing["lidVelocity"] / height,
+                               rtol=1e-12)
