@@ -1,7 +1,11 @@
-"""The wallStress and packingStatistics function objects (issue 11) on a
-real demFoam run, checked against conservation laws: tests/cases/grainColumn
-(256 spheres, 2600 kg/m^3, periodic 0.1 m x 0.1 m box, fixed base, a lid
-under a normal stress sigma0 = 1e4 Pa) settled to rest under gravity."""
+"""The wallStress and packingStatistics function objects and the bonds'
+VTK output (issue 11) on real demFoam runs, checked against conservation
+laws and against each other: tests/cases/grainColumn (256 spheres,
+2600 kg/m^3, periodic 0.1 m x 0.1 m box, fixed base, a lid under a normal
+stress sigma0 = 1e4 Pa) settled to rest under gravity, the same with bonds
+frozen on contact, and tests/cases/wallBox (walls on x, a free lid)."""
+
+import os
 
 import numpy as np
 
@@ -253,3 +257,20 @@ def test_free_lid_and_side_walls_in_balance():
                                rtol=1e-12)
     np.testing.assert_allclose(packing["strainRate"], -packing["lidVelocity"] / height,
                                rtol=1e-12)
+
+
+def test_bonds_output_can_be_switched_off():
+    """output { bonds no; }: the grains are written, the bonds not (and with
+    bonds and no such entry they are: the test above)."""
+    c = Case("grainColumn", "bonds_output_off")
+    c.set("system/controlDict", "endTime", 0.01)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 10)
+    c.set(DEM, "bonds", "{ youngsModulus 1e9; formation { type frozenOnContact; } }")
+    c.set(DEM, "output", "{ format binary; bonds no; }")
+    c.run("blockMesh")
+    c.run("demFoam")
+    written = sorted(os.listdir(c.file("VTK")))
+    print("VTK/:", written)
+    assert "grains.vtp.series" in written
+    assert not any(name.startswith("bonds") for name in written)
