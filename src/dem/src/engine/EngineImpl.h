@@ -98,6 +98,7 @@ public:
     BondData bonds() const override;
     BondCounts bondCounts() const override;
     void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
+    double maximumBondStiffness() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
 
     // ---- stepping -------------------------------------------------------------------------
