@@ -2,8 +2,9 @@
 Case: tests/cases/wallBox, demFoam: 4 grains on the floor touching the x
 walls of a box with wall patches on x (the DEM box is closed there), cyclic
 y, and a free lid (mass 0.05 kg) released at z = 0.09 m while gravity ramps
-linearly from zero to (0 0 -9.81) over 0.05 s; it lands at about 0.15 s. Bad 'walls' and 'gravity' entries stop naming the
-file, the entry and the valid choices."""
+linearly from zero to (0 0 -9.81) over 0.05 s; it lands at about 0.15 s.
+Bad 'walls' and 'gravity' entries stop naming the file, the entry and the
+valid choices."""
 
 import filecmp
 import os
