@@ -46,9 +46,10 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
+    bonds_(properties_),
     grid_(mesh),
+    walls_(properties_, grid_.grid(), mesh.time().value()),
     system_(),
-    topWall_(-1),
     topWall0_(0),
     asciiOutput_(false),
     surfaceOutput_(true),
@@ -93,7 +94,7 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         [&]
         {
             system_.reset(new dem::System(readParameters()));
-            addWalls();
+            walls_.addTo(*system_);
             if (fromState)
             {
                 startFromState(statePath);
@@ -106,9 +107,9 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             Info<< "    backend " << system_->backendName() << ", "
                 << system_->threadCount() << " thread(s)" << endl;
 
-            if (topWall_ >= 0 && !fromState)
+            if (hasTopWall() && !fromState)
             {
-                topWall0_ = system_->wall(topWall_).position;
+                topWall0_ = system_->wall(walls_.top()).position;
             }
             if (displacement0_.empty())
             {
@@ -167,18 +168,6 @@ void Foam::demCloud::reportProgress()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::demCloud::updateWallStress(const scalar t)
-{
-    forAll(wallStress_, w)
-    {
-        if (wallStress_.set(w))
-        {
-            system_->setWallStress(w, wallStress_[w].value(t));
-        }
-    }
-}
-
-
 void Foam::demCloud::evolve(const scalar dtFluid)
 {
     const scalar dt = system_->timeStep();
@@ -200,8 +189,14 @@ void Foam::demCloud::evolve(const scalar dtFluid)
       + properties_.objectPath(),
         [&]
         {
-            // Loads held for the fluid step, at its middle
-            updateWallStress(mesh_.time().value() - 0.5*dtFluid);
+            // Wall stresses and gravity held for the fluid step, at its
+            // middle. The end time as its name reads: the value a restart
+            // starts from, where the running sum of time steps differs in
+            // the last bits, so time-dependent loads restart bit-identically
+            const Time& runTime = mesh_.time();
+            scalar t = runTime.value();
+            readScalar(runTime.timeName(), t);
+            walls_.update(*system_, t - 0.5*dtFluid);
             system_->step(nSub);
         }
     );
@@ -286,26 +281,26 @@ dem::GrainData Foam::demCloud::grains() const
 
 Foam::scalar Foam::demCloud::topWallPosition() const
 {
-    if (topWall_ < 0)
+    if (!hasTopWall())
     {
         return GREAT;
     }
     return demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(topWall_); }
+        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
     ).position;
 }
 
 
 Foam::scalar Foam::demCloud::topWallStress() const
 {
-    if (topWall_ < 0)
+    if (!hasTopWall())
     {
         return 0;
     }
     const dem::WallSpec spec = demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(topWall_); }
+        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
     ).spec;
     return spec.mode == dem::WallSpec::Mode::stress ? spec.normalStress : 0;
 }
