@@ -74,10 +74,21 @@ void checkParameters(const Parameters& p)
                 p.boxUpper[d], "> boxLower");
 }
 
-void checkWall(const WallSpec& w)
+void checkWall(const WallSpec& w, const Parameters& p)
 {
+    require(w.axis >= 0 && w.axis <= 2, "wall.axis", w.axis, "0 (x), 1 (y) or 2 (z)");
+    require(std::isfinite(w.position), "wall.position", w.position, "finite");
+    if (w.axis < 2 && p.periodic[std::size_t(w.axis)])
+        throw Error(std::string("a wall on ") + (w.axis == 0 ? "x" : "y") +
+                    " needs a box that is "
+                    "not periodic in " +
+                    (w.axis == 0 ? "x" : "y") +
+                    " (Parameters::periodic): grains would meet it and its periodic image");
     if (w.mode == WallSpec::Mode::stress)
         require(w.mass > 0, "wall.mass", w.mass, "> 0 for a stress-controlled wall");
+    if (w.mode == WallSpec::Mode::free)
+        require(w.mass > 0 && std::isfinite(w.mass), "wall.mass", w.mass,
+                "> 0 and finite for a free wall");
 }
 
 //- The largest normal or tangential stiffness of a material: its constants (linear spring), or
@@ -131,13 +142,13 @@ int System::addGrains(const std::vector<GrainInit>& grains)
 
 int System::addWall(const WallSpec& wall)
 {
-    checkWall(wall);
+    checkWall(wall, impl_->parameters);
     return impl_->engine->addWall(wall);
 }
 
 void System::setWallMotion(int wall, const WallSpec& spec)
 {
-    checkWall(spec);
+    checkWall(spec, impl_->parameters);
     impl_->engine->setWallMotion(wall, spec);
 }
 

@@ -47,8 +47,8 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         )
     ),
     grid_(mesh),
+    walls_(properties_, grid_.grid(), mesh.time().value()),
     system_(),
-    topWall_(-1),
     topWall0_(0),
     asciiOutput_(false),
     surfaceOutput_(true),
@@ -93,7 +93,7 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         [&]
         {
             system_.reset(new dem::System(readParameters()));
-            addWalls();
+            walls_.addTo(*system_);
             if (fromState)
             {
                 startFromState(statePath);
@@ -106,9 +106,9 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             Info<< "    backend " << system_->backendName() << ", "
                 << system_->threadCount() << " thread(s)" << endl;
 
-            if (topWall_ >= 0 && !fromState)
+            if (hasTopWall() && !fromState)
             {
-                topWall0_ = system_->wall(topWall_).position;
+                topWall0_ = system_->wall(walls_.top()).position;
             }
             if (displacement0_.empty())
             {
@@ -167,18 +167,6 @@ void Foam::demCloud::reportProgress()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::demCloud::updateWallStress(const scalar t)
-{
-    forAll(wallStress_, w)
-    {
-        if (wallStress_.set(w))
-        {
-            system_->setWallStress(w, wallStress_[w].value(t));
-        }
-    }
-}
-
-
 void Foam::demCloud::evolve(const scalar dtFluid)
 {
     const scalar dt = system_->timeStep();
@@ -200,8 +188,9 @@ void Foam::demCloud::evolve(const scalar dtFluid)
       + properties_.objectPath(),
         [&]
         {
-            // Loads held for the fluid step, at its middle
-            updateWallStress(mesh_.time().value() - 0.5*dtFluid);
+            // Wall stresses and gravity held for the fluid step, at its
+            // middle
+            walls_.update(*system_, mesh_.time().value() - 0.5*dtFluid);
             system_->step(nSub);
         }
     );
@@ -286,26 +275,26 @@ dem::GrainData Foam::demCloud::grains() const
 
 Foam::scalar Foam::demCloud::topWallPosition() const
 {
-    if (topWall_ < 0)
+    if (!hasTopWall())
     {
         return GREAT;
     }
     return demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(topWall_); }
+        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
     ).position;
 }
 
 
 Foam::scalar Foam::demCloud::topWallStress() const
 {
-    if (topWall_ < 0)
+    if (!hasTopWall())
     {
         return 0;
     }
     const dem::WallSpec spec = demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(topWall_); }
+        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
     ).spec;
     return spec.mode == dem::WallSpec::Mode::stress ? spec.normalStress : 0;
 }

@@ -27,19 +27,6 @@ static const Enum<dem::Backend> backendNames
     { dem::Backend::cuda, "cuda" },
 });
 
-static const Enum<dem::WallSpec::Side> wallSideNames
-({
-    { dem::WallSpec::Side::lower, "lower" },
-    { dem::WallSpec::Side::upper, "upper" },
-});
-
-static const Enum<dem::WallSpec::Mode> wallModeNames
-({
-    { dem::WallSpec::Mode::fixed, "fixed" },
-    { dem::WallSpec::Mode::velocity, "velocity" },
-    { dem::WallSpec::Mode::stress, "stress" },
-});
-
 static const Enum<dem::GrainFlag> grainFlagNames
 ({
     { dem::GrainFlag::free, "free" },
@@ -66,7 +53,7 @@ dem::Parameters Foam::demCloud::readParameters() const
     p.viscousDrag = dict.getOrDefault<scalar>("viscousDrag", 0);
     p.defaultDensity = inputChecks::getPositive(dict, "density");
 
-    const vector g(dict.get<vector>("gravity"));
+    const vector g(walls_.gravity(mesh_.time().value()));
     p.gravity = {g.x(), g.y(), g.z()};
 
     // One run-time selected law each; grain-wall contacts default to the
@@ -77,13 +64,14 @@ dem::Parameters Foam::demCloud::readParameters() const
       ? contactLaw::New(dict.subDict("wallContact"))->material()
       : p.grainGrain;
 
-    // The periodic box is the mesh's horizontal extent
+    // The box is the mesh's horizontal extent, periodic where the mesh
+    // sides are cyclic
     const dem::UniformGrid& g3 = grid_.grid();
     for (int d = 0; d < 2; ++d)
     {
         p.boxLower[d] = g3.origin[d];
         p.boxUpper[d] = g3.origin[d] + g3.n[d]*g3.spacing[d];
-        p.periodic[d] = true;
+        p.periodic[d] = g3.periodic[d];
     }
 
     if (p.neighbourSkin < 0 || p.threads < 0 || p.viscousDrag < 0)
@@ -104,72 +92,12 @@ dem::Parameters Foam::demCloud::readParameters() const
 }
 
 
-void Foam::demCloud::addWalls()
-{
-    const dictionary& walls = properties_.subDict("walls");
-    const dem::UniformGrid& g = grid_.grid();
-    const scalar zMin = g.origin[2];
-    const scalar zMax = g.origin[2] + g.n[2]*g.spacing[2];
-    scalar topZ = -GREAT;
-
-    for (const entry& e : walls)
-    {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(walls)
-                << "Entry '" << e.keyword() << "' in " << walls.name()
-                << " must be a wall dictionary { side ...; mode ...; }" << nl
-                << exit(FatalIOError);
-        }
-        const dictionary& dict = e.dict();
-
-        dem::WallSpec w;
-        w.side = wallSideNames.get("side", dict);
-        w.mode = wallModeNames.get("mode", dict);
-        w.position = dict.get<scalar>("position");
-        w.velocity = dict.getOrDefault<scalar>("velocity", 0);
-        w.frictional = dict.getOrDefault<bool>("frictional", true);
-
-        wallStress_.resize(wallStress_.size() + 1);
-        if (w.mode == dem::WallSpec::Mode::stress)
-        {
-            w.mass = inputChecks::getPositive(dict, "mass");
-            wallStress_.set
-            (
-                wallStress_.size() - 1,
-                Function1<scalar>::New("normalStress", dict)
-            );
-            w.normalStress =
-                wallStress_.last().value(mesh_.time().value());
-        }
-        if (w.position < zMin - SMALL || w.position > zMax + SMALL)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'position' (" << w.position << ") of wall "
-                << e.keyword() << " in " << dict.name()
-                << " lies outside the mesh, z in [" << zMin << ", " << zMax
-                << "]" << nl << exit(FatalIOError);
-        }
-
-        wallSpecs_.push_back(w);
-        const int index = system_->addWall(w);
-        if (w.side == dem::WallSpec::Side::upper && w.position > topZ)
-        {
-            topZ = w.position;
-            topWall_ = index;
-        }
-        Info<< "    wall " << e.keyword() << ": " << wallSideNames[w.side]
-            << ", " << wallModeNames[w.mode] << " at z = " << w.position
-            << endl;
-    }
-}
-
-
 void Foam::demCloud::addGrainsFromFile()
 {
     const grainStartState start
     (
-        mesh_.time().timePath()/"grains", properties_, grid_.grid(), wallSpecs_
+        mesh_.time().timePath()/"grains", properties_, grid_.grid(),
+        walls_.specs()
     );
     system_->addGrains(start.grains());
     start.checkOverlaps(*system_);
@@ -247,11 +175,11 @@ void Foam::demCloud::startFromState(const fileName& path)
     system_->importState(state);
     checkGrainsInsideMesh(path);
 
-    if (system_->wallCount() != int(wallSpecs_.size()))
+    if (system_->wallCount() != int(walls_.specs().size()))
     {
         FatalIOErrorInFunction(properties_)
             << path << " holds " << system_->wallCount() << " walls but "
-            << properties_.name() << " defines " << wallSpecs_.size() << nl
+            << properties_.name() << " defines " << walls_.specs().size() << nl
             << exit(FatalIOError);
     }
 
@@ -276,18 +204,15 @@ void Foam::demCloud::startFromState(const fileName& path)
     Info<< "    packing prepared by another run (" << path << ", its clock at "
         << system_->time() << " s): applying walls, flags, time step and"
         << " drag of " << properties_.name() << endl;
-    for (size_t w = 0; w < wallSpecs_.size(); ++w)
-    {
-        system_->setWallMotion(int(w), wallSpecs_[w]);
-    }
+    walls_.applyTo(*system_);
     const dem::Parameters p(readParameters());
     system_->setTimeStep(p.timeStep);
     system_->setViscousDrag(p.viscousDrag);
     applyGrainFlags();
     displacement0_ = system_->grains().displacement;
-    if (topWall_ >= 0)
+    if (hasTopWall())
     {
-        topWall0_ = system_->wall(topWall_).position;
+        topWall0_ = system_->wall(walls_.top()).position;
     }
 }
 

@@ -84,7 +84,8 @@ void Foam::grainStartState::checkPlacement
     {
         auto& x = grains_[i].position;
 
-        // Periodic in x and y: [lo, hi)
+        // Periodic sides: [lo, hi), wrapped if asked; closed sides (walls):
+        // inside the mesh, never wrapped
         for (int d = 0; d < 2; ++d)
         {
             const scalar lo = mesh.origin[d];
@@ -92,6 +93,14 @@ void Foam::grainStartState::checkPlacement
             if (x[d] >= lo && x[d] < lo + length)
             {
                 continue;
+            }
+            if (!mesh.periodic[d])
+            {
+                FatalErrorInFunction
+                    << describe(i).c_str() << " of " << path_ << " lies"
+                    << " outside the mesh, " << char('x' + d) << " in ["
+                    << num(lo).c_str() << ", " << num(lo + length).c_str()
+                    << "]" << nl << exit(FatalError);
             }
             if (!wrap || !std::isfinite(x[d]))
             {
@@ -122,12 +131,14 @@ void Foam::grainStartState::checkPlacement
         for (const dem::WallSpec& w : walls)
         {
             const bool lower = w.side == dem::WallSpec::Side::lower;
-            if (lower ? x[2] < w.position : x[2] > w.position)
+            const scalar xw = x[w.axis];
+            if (lower ? xw < w.position : xw > w.position)
             {
                 FatalIOErrorInFunction(demProperties)
                     << describe(i).c_str() << " of " << path_ << " lies "
                     << (lower ? "below the lower" : "above the upper")
-                    << " wall at z = " << num(w.position).c_str() << " ("
+                    << " wall at " << char('x' + w.axis) << " = "
+                    << num(w.position).c_str() << " ("
                     << demProperties.name() << ", walls)" << nl
                     << exit(FatalIOError);
             }

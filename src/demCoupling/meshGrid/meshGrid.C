@@ -7,6 +7,7 @@
 #include "cyclicPolyPatch.H"
 #include "boundBox.H"
 #include "volFields.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -136,16 +137,11 @@ Foam::meshGrid::meshGrid(const fvMesh& mesh)
         cellOfGrid_[gi] = celli;
     }
 
+    // Periodic only where asked: cyclic sides make the DEM box periodic,
+    // wall sides close it (the grains' walls stand there, demWalls)
     for (direction d = 0; d < 2; ++d)
     {
         grid_.periodic[d] = cyclicSides(mesh, d);
-        if (!grid_.periodic[d])
-        {
-            FatalErrorInFunction
-                << "The mesh sides normal to " << vector::componentNames[d]
-                << " must be cyclic patches: the DEM box is periodic in x"
-                << " and y" << nl << exit(FatalError);
-        }
     }
     if (cyclicSides(mesh, 2))
     {
@@ -157,7 +153,9 @@ Foam::meshGrid::meshGrid(const fvMesh& mesh)
 
     Info<< "Uniform grid for the grains: " << grid_.n[0] << " x "
         << grid_.n[1] << " x " << grid_.n[2] << " cells of " << delta
-        << " m from " << bb.min() << endl;
+        << " m from " << bb.min() << ", periodic in x: "
+        << Switch(grid_.periodic[0]) << ", y: " << Switch(grid_.periodic[1])
+        << endl;
 }
 
 

@@ -22,6 +22,7 @@
 #include <thrust/sequence.h>
 #include <thrust/sort.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -57,15 +58,22 @@ public:
         w.position = wall.position;
         w.velocity = wall.mode == WallSpec::Mode::fixed ? 0.0 : wall.velocity;
         walls_.push_back(w);
+        if (!forcesStale_)
+            accelerateWalls(); // its grain force is zero until the next force evaluation
         return int(walls_.size()) - 1;
     }
     void setWallMotion(int wall, const WallSpec& spec) override
     {
         WallState& w = walls_.at(checkWall(wall));
+        if (spec.axis != w.spec.axis)
+            throw Error("setWallMotion: wall " + std::to_string(wall) +
+                        " cannot change its axis (add another wall)");
         w.spec = spec;
         w.spec.position = w.position;
         w.velocity = spec.mode == WallSpec::Mode::fixed ? 0.0 : spec.velocity;
         w.acceleration = 0.0;
+        if (!forcesStale_)
+            accelerateWalls(); // the next half kick sees the new mode's acceleration
     }
     void setWallStress(int wall, double normalStress) override
     {
@@ -78,6 +86,7 @@ public:
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                        double vy) override;
     void setViscousDrag(double drag) override { params_.viscousDrag = drag; }
+    void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
     void setTimeStep(double dt) override { params_.timeStep = dt; }
 
     // ---- stepping -------------------------------------------------------------------------
@@ -90,6 +99,7 @@ public:
             computeInitialForces();
         if (nSteps <= 0)
             return;
+        checkWallAreas();
         // Each pass over the grains ends one step and begins the next (see GatherKick).
         double moved2 = 0.0;
         withShapes(
@@ -273,7 +283,7 @@ private:
         v.count = int(walls_.size());
         for (int w = 0; w < v.count; ++w)
         {
-            v.axis[w] = 2; // z planes (WallSpec has no other axis yet)
+            v.axis[w] = walls_[w].spec.axis;
             v.position[w] = walls_[w].position;
             v.normalSign[w] = walls_[w].spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
             v.velocity[w] = walls_[w].velocity;
@@ -282,17 +292,49 @@ private:
         return v;
     }
 
-    double boxArea() const
+    //- The area a stress-controlled wall's normal stress acts on (WallSpec::Mode::stress): z
+    //- walls the box's x-y area; x (y) walls the box's y (x) length times the gap between the
+    //- z walls (the highest lower and the lowest upper one).
+    double stressArea(const WallState& wall) const
     {
-        return (params_.boxUpper[0] - params_.boxLower[0]) *
-               (params_.boxUpper[1] - params_.boxLower[1]);
+        const int axis = wall.spec.axis;
+        if (axis == 2)
+            return boxLength(0) * boxLength(1);
+        return boxLength(1 - axis) * zWallGap();
+    }
+    double boxLength(int d) const { return params_.boxUpper[d] - params_.boxLower[d]; }
+    //- The gap between the z walls; -1 without a lower and an upper one.
+    double zWallGap() const
+    {
+        double lower = -HUGE_VAL, upper = HUGE_VAL;
+        for (const WallState& w : walls_)
+            if (w.spec.axis == 2)
+            {
+                if (w.spec.side == WallSpec::Side::lower)
+                    lower = std::max(lower, w.position);
+                else
+                    upper = std::min(upper, w.position);
+            }
+        return std::isfinite(lower) && std::isfinite(upper) ? upper - lower : -1.0;
+    }
+    //- Refuse a stress-controlled x or y wall without the z walls its area is measured between.
+    void checkWallAreas() const
+    {
+        for (std::size_t w = 0; w < walls_.size(); ++w)
+            if (walls_[w].spec.mode == WallSpec::Mode::stress && walls_[w].spec.axis != 2 &&
+                zWallGap() < 0.0)
+                throw Error("wall " + std::to_string(w) + ": a stress-controlled " +
+                            (walls_[w].spec.axis == 0 ? "x" : "y") +
+                            " wall needs a lower and an upper z wall (its area is the box's " +
+                            (walls_[w].spec.axis == 0 ? "y" : "x") +
+                            " length times their gap); add them or use another mode");
     }
 
     void wallsKickDrift(double dt)
     {
         for (WallState& w : walls_)
         {
-            if (w.spec.mode == WallSpec::Mode::stress)
+            if (w.spec.mode == WallSpec::Mode::stress || w.spec.mode == WallSpec::Mode::free)
                 w.velocity += 0.5 * dt * w.acceleration;
             if (w.spec.mode != WallSpec::Mode::fixed)
                 w.position += dt * w.velocity;
@@ -308,20 +350,37 @@ private:
                         grains_.hasCapsules() ? e.grains_.real(fWallStateEnd) : nullptr, w});
     }
 
-    void wallsFinishStep(double dt)
+    //- The accelerations of the stress-controlled and free walls from the grains' forces on
+    //- them at the current state: stress walls (grain force + sigma0 A pressing onto the
+    //- grains) / m; free walls grain force / m + g along their axis.
+    void accelerateWalls()
     {
         for (std::size_t w = 0; w < walls_.size(); ++w)
         {
             WallState& wall = walls_[w];
-            if (wall.spec.mode != WallSpec::Mode::stress)
+            if (wall.spec.mode != WallSpec::Mode::stress && wall.spec.mode != WallSpec::Mode::free)
                 continue;
-            // The applied stress presses the wall onto the grains (down for an upper wall).
-            const double normalZ = wall.spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
             wall.grainForce = wallGrainForce(int(w));
+            if (wall.spec.mode == WallSpec::Mode::free)
+            {
+                wall.acceleration =
+                    wall.grainForce / wall.spec.mass + params_.gravity[std::size_t(wall.spec.axis)];
+                continue;
+            }
+            // The applied stress presses the wall onto the grains (-axis for an upper wall).
+            const double normalSign = wall.spec.side == WallSpec::Side::lower ? 1.0 : -1.0;
             wall.acceleration =
-                (wall.grainForce + normalZ * wall.spec.normalStress * boxArea()) / wall.spec.mass;
-            wall.velocity += 0.5 * dt * wall.acceleration;
+                (wall.grainForce + normalSign * wall.spec.normalStress * stressArea(wall)) /
+                wall.spec.mass;
         }
+    }
+
+    void wallsFinishStep(double dt)
+    {
+        accelerateWalls();
+        for (WallState& wall : walls_)
+            if (wall.spec.mode == WallSpec::Mode::stress || wall.spec.mode == WallSpec::Mode::free)
+                wall.velocity += 0.5 * dt * wall.acceleration;
     }
 
     //- Forces of freshly added grains, so the first half kick is second-order too.
@@ -334,6 +393,7 @@ private:
         (void)n;
         gatherKick(0.0, 0.0, false);
         forcesStale_ = false;
+        accelerateWalls(); // so the walls' first half kick is second-order too
     }
 
     int reactionComponents() const

@@ -35,6 +35,36 @@ const typename Map::mapped_type& entry(const Map& map, const std::string& name)
         throw Error("importState: the state has no entry '" + name + "'");
     return it->second;
 }
+
+//- A state written when a grain had wall records for 4 walls and the walls were z planes
+//- (no 'walls.layout'), in today's layout: records padded to kMaxWalls, the capsule end's
+//- contact bits moved up, axis z.
+inline SystemState withWallLayoutOf6(const SystemState& old)
+{
+    constexpr int oldMaxWalls = 4;
+    SystemState s = old;
+    const std::int64_t n = entry(s.integers, "counters").at(5);
+    for (const char* name : {"grain.wallState", "grain.wallStateEnd"})
+    {
+        const auto it = s.reals.find(name);
+        if (it == s.reals.end() || it->second.size() != std::size_t(kWallRecord * oldMaxWalls * n))
+            continue; // absent (sphere-only states) or not the old layout: checked later
+        std::vector<double> padded(std::size_t(kWallStateComponents * n), 0.0);
+        for (std::int64_t i = 0; i < n; ++i)
+            std::copy_n(&it->second[std::size_t(i * kWallRecord * oldMaxWalls)],
+                        kWallRecord * oldMaxWalls, &padded[std::size_t(i * kWallStateComponents)]);
+        it->second = padded;
+    }
+    for (std::int64_t& bits : s.integers["grain.wallContacts"])
+        bits = (bits & ((1 << oldMaxWalls) - 1)) | ((bits >> oldMaxWalls) << kMaxWalls);
+    std::vector<std::int64_t>& wallInts = s.integers["walls.int"];
+    std::vector<std::int64_t> withAxis;
+    for (std::size_t w = 0; w + 2 < wallInts.size(); w += 3)
+        withAxis.insert(withAxis.end(), {wallInts[w], wallInts[w + 1], wallInts[w + 2], 2});
+    wallInts = withAxis;
+    s.integers["walls.layout"] = {kMaxWalls};
+    return s;
+}
 } // namespace stateDetail
 
 template <class Exec>
@@ -66,8 +96,9 @@ SystemState EngineImpl<Exec>::exportState() const
         walls.insert(walls.end(), {w.position, w.velocity, w.acceleration, w.grainForce,
                                    w.spec.velocity, w.spec.mass, w.spec.normalStress});
         wallInts.insert(wallInts.end(), {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
-                                         std::int64_t(w.spec.frictional)});
+                                         std::int64_t(w.spec.frictional), w.spec.axis});
     }
+    s.integers["walls.layout"] = {kMaxWalls}; // grain wall records per grain; 4 per wall int
     s.integers["pairs.historyLayout"] = {kHistoryLayout};
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
     s.integers["counters"] = {steps_,
@@ -83,6 +114,11 @@ template <class Exec>
 void EngineImpl<Exec>::importState(const SystemState& s)
 {
     using namespace stateDetail;
+    if (s.integers.find("walls.layout") == s.integers.end())
+        return importState(withWallLayoutOf6(s));
+    if (entry(s.integers, "walls.layout") != std::vector<std::int64_t>{kMaxWalls})
+        throw Error("importState: the state's wall layout (walls.layout) is not this version's (" +
+                    std::to_string(kMaxWalls) + " walls)");
     const std::vector<std::int64_t>& counters = entry(s.integers, "counters");
     if (counters.size() != 6)
         throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
@@ -149,8 +185,9 @@ void EngineImpl<Exec>::importState(const SystemState& s)
 
     const std::vector<double>& walls = entry(s.reals, "walls.real");
     const std::vector<std::int64_t>& wallInts = entry(s.integers, "walls.int");
-    const std::size_t wallCount = wallInts.size() / 3;
-    if (walls.size() != 7 * wallCount || wallCount > std::size_t(kMaxWalls))
+    const std::size_t wallCount = wallInts.size() / 4;
+    if (walls.size() != 7 * wallCount || wallInts.size() != 4 * wallCount ||
+        wallCount > std::size_t(kMaxWalls))
         throw Error("importState: wall data is inconsistent");
     walls_.assign(wallCount, WallState());
     for (std::size_t w = 0; w < wallCount; ++w)
@@ -165,9 +202,10 @@ void EngineImpl<Exec>::importState(const SystemState& s)
         ws.spec.velocity = r[4];
         ws.spec.mass = r[5];
         ws.spec.normalStress = r[6];
-        ws.spec.side = WallSpec::Side(wallInts[3 * w]);
-        ws.spec.mode = WallSpec::Mode(wallInts[3 * w + 1]);
-        ws.spec.frictional = wallInts[3 * w + 2] != 0;
+        ws.spec.side = WallSpec::Side(wallInts[4 * w]);
+        ws.spec.mode = WallSpec::Mode(wallInts[4 * w + 1]);
+        ws.spec.frictional = wallInts[4 * w + 2] != 0;
+        ws.spec.axis = int(wallInts[4 * w + 3]);
     }
     const std::vector<double>& clock = entry(s.reals, "clock");
     if (clock.size() != 3)

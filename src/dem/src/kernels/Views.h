@@ -12,8 +12,8 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-//- Maximum number of walls (their contact history is stored per grain).
-constexpr int kMaxWalls = 4;
+//- Maximum number of walls (their contact history is stored per grain): a box of six sides.
+constexpr int kMaxWalls = 6;
 //- Per grain, wall and contact: tangential history (x, y, z), then the grain's force on the
 //- wall along the wall's axis. A sphere touches a plane once; a capsule at both ends of its
 //- core segment, the second end's records in a second array (GrainView::wallStateEnd).
@@ -220,8 +220,8 @@ struct BoxView
 };
 
 //- Axis-aligned walls: the plane x[axis] = position with unit normal normalSign e_axis
-//- pointing into the grains (lower z wall: axis 2, +1; upper: -1). Today's walls are z planes;
-//- the geometry is written for any axis. A wall moves along its normal.
+//- pointing into the grains (lower z wall: axis 2, +1; upper: -1; x and y walls alike). A wall
+//- moves along its normal.
 struct WallsView
 {
     int count = 0;
