@@ -58,6 +58,19 @@ void checkMaterial(const ContactMaterial& m, const std::string& prefix)
     require(m.tangentialDamping >= 0, prefix + ".tangentialDamping", m.tangentialDamping, ">= 0");
 }
 
+//- What the bond store itself needs (formation); the laws' constants are checked beside them.
+void checkBondStore(const BondParameters& b)
+{
+    if (!b.enabled)
+        return;
+    require(b.formationInterval >= 1, "bonds.formationInterval", b.formationInterval,
+            ">= 1 (steps between freezing checks)");
+    require(b.areaFraction[0] > 0 && b.areaFraction[0] <= 1, "bonds.areaFraction[0]",
+            b.areaFraction[0], "in (0, 1] (r_b^2 / r_min^2)");
+    require(b.areaFraction[1] >= b.areaFraction[0] && b.areaFraction[1] <= 1,
+            "bonds.areaFraction[1]", b.areaFraction[1], "in [areaFraction[0], 1]");
+}
+
 void checkParameters(const Parameters& p)
 {
     checkMaterial(p.grainGrain, "grainGrain");
@@ -72,6 +85,7 @@ void checkParameters(const Parameters& p)
     for (int d = 0; d < 2; ++d)
         require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
                 p.boxUpper[d], "> boxLower");
+    checkBondStore(p.bonds);
 }
 
 void checkWall(const WallSpec& w, const Parameters& p)

@@ -1,12 +1,15 @@
 // EngineImpl.h
 // The engine, written once over an execution policy (OmpExecution with g++, CudaExecution
 // with nvcc): owns grains, pairs and walls, and runs the velocity-Verlet step
-//     kick-drift -> (rebuild if a grain moved more than skin/2) -> pair forces ->
-//     gather-kick (per-grain forces, the pairs' sums, the kicks and the next step's drift)
-// Walls are few and live on the host. Read-back, coupling and restart are in EngineIo.h.
+//     kick-drift -> (rebuild if a grain moved more than skin/2) -> (bond formation) ->
+//     pair forces -> bond forces (removal of broken bonds) ->
+//     gather-kick (per-grain forces, the pairs' and bonds' sums, the kicks and the next drift)
+// Walls are few and live on the host. Read-back, coupling and restart are in EngineIo.h, the
+// bond store's set-up, upkeep and read-back in EngineBonds.h.
 #pragma once
 
 #include "dem/Error.h"
+#include "engine/BondStorage.h"
 #include "engine/Engine.h"
 #include "engine/GrainStorage.h"
 #include "engine/PairStorage.h"
@@ -45,7 +48,10 @@ public:
     template <class T>
     using Vec = typename Exec::template Vector<T>;
 
-    explicit EngineImpl(const Parameters& p) : params_(p) {}
+    explicit EngineImpl(const Parameters& p) : params_(p)
+    {
+        grains_.setCapsulePath(p.bonds.enabled); // bonds take the capsule forms
+    }
 
     // ---- set-up ---------------------------------------------------------------------------
     void addGrains(const std::vector<GrainInit>& grains) override;
@@ -85,8 +91,13 @@ public:
     }
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                        double vy) override;
+    void setGrainVelocities(const std::vector<int>& indices, const std::array<double, 3>& velocity,
+                            const std::array<double, 3>& angularVelocity) override;
     void setViscousDrag(double drag) override { params_.viscousDrag = drag; }
     void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
+    void addBonds(const std::vector<BondInit>& bonds) override;
+    BondData bonds() const override;
+    BondCounts bondCounts() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
 
     // ---- stepping -------------------------------------------------------------------------
@@ -115,6 +126,8 @@ public:
                 Exec::forEach(n, UnpackGrains{grains_.view()});
                 rebuild();
             }
+            if (formationDue())
+                formBonds();
             computeForces(dt);
             const bool last = s + 1 == nSteps;
             moved2 = gatherKick(dt, dt, !last);
@@ -218,19 +231,29 @@ private:
     }
 
     //- The shape family: SphereShapes while every grain is a sphere (today's arithmetic and
-    //- the compact load record), CapsuleShapes once any grain has a core segment.
+    //- the compact load record), CapsuleShapes once any grain has a core segment,
+    //- BondedCapsuleShapes in a system with bonds.
     template <class F>
     void withShapes(F&& f) const
     {
-        if (grains_.hasCapsules())
+        if (params_.bonds.enabled)
+            f(BondedCapsuleShapes{});
+        else if (grains_.hasCapsules())
             f(CapsuleShapes{});
         else
             f(SphereShapes{});
     }
 
-    //- Per-pair loads for GatherKick. historyDt: time step of the tangential spring increment
-    //- (0: evaluate without advancing).
+    //- Per-pair and per-bond loads for GatherKick. historyDt: time step of the tangential
+    //- spring increment and of the bonds' update (0: evaluate without advancing).
     void computeForces(double historyDt)
+    {
+        computePairForces(historyDt);
+        if (params_.bonds.enabled)
+            computeBondForces(historyDt);
+    }
+
+    void computePairForces(double historyDt)
     {
         withShapes(
             [&](auto shapes)
@@ -268,10 +291,12 @@ private:
                                 params_.viscousDrag,
                                 fluid_};
                             grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
-                            moved2 =
-                                exec_.maxOf(grains_.size(),
-                                            GatherKick<Shapes, Law>{grains_.view(), pairs_.view(),
-                                                                    grainLoads, dt, driftNext});
+                            const BondGather bonds =
+                                Shapes::kBonds ? bonds_.gather() : BondGather{};
+                            moved2 = exec_.maxOf(grains_.size(),
+                                                 GatherKick<Shapes, Law>{grains_.view(),
+                                                                         pairs_.view(), grainLoads,
+                                                                         dt, driftNext, bonds});
                         });
             });
         return moved2;
@@ -410,6 +435,21 @@ private:
     CellGridView cellGrid(); //!< also throwLeftTheNumbers if grains are absurdly far apart
     void rebuild();
 
+    // ---- the bond store (EngineBonds.h) ------------------------------------------------------
+    //- Internal grain indices of the bonds, the per-grain index and the pairs' bonded flags,
+    //- after anything that changes the grain order, the pair list or the bonds.
+    void indexBonds();
+    //- Per-bond loads (BondForceKernel); broken bonds are counted and removed at once.
+    void computeBondForces(double dt);
+    bool formationDue() const
+    {
+        return params_.bonds.enabled && params_.bonds.formation == BondFormation::frozenOnContact &&
+               steps_ % params_.bonds.formationInterval == 0;
+    }
+    //- frozenOnContact: a bond on every touching unbonded pair of the neighbour list.
+    void formBonds();
+    void importBonds(const SystemState& state); //!< the bond part of importState
+
     //- Throw when the step's largest squared move moved2 is not finite (before a NaN reaches a
     //- cell index): see throwLeftTheNumbers.
     void stopIfNotFinite(double moved2)
@@ -456,6 +496,11 @@ private:
     Parameters params_;
     GrainStorage<Exec> grains_;
     PairStorage<Exec> pairs_, oldPairs_;
+    BondStorage<Exec> bonds_;
+    Vec<int> internalOf_, formationPairs_;
+    Vec<double> bondBroken_;
+    mutable Vec<double> bondReadback_;
+    std::size_t bondsFormed_ = 0, bondsBroken_ = 0; //!< since the System was built
     std::vector<WallState> walls_;
     Vec<int> cellKey_, order_, cellStart_, counts_;
     Vec<double> fluidGradP_;
@@ -478,3 +523,4 @@ private:
 
 #include "engine/EngineIo.h"
 #include "engine/EngineNeighbours.h"
+#include "engine/EngineBonds.h"

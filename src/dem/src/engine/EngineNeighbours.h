@@ -164,6 +164,8 @@ void EngineImpl<Exec>::rebuild()
     grainsAtLastBuild_ = n;
     needRebuild_ = false;
     ++rebuilds_;
+    if (params_.bonds.enabled)
+        indexBonds();
 }
 
 } // namespace detail

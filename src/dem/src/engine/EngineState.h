@@ -1,7 +1,7 @@
 // EngineState.h
 // EngineImpl: complete state as named host arrays (grains in internal order, the neighbour
-// list with contact history, walls, clock). Importing it restores the engine exactly, so the
-// continued run is bit-identical to the uninterrupted one.
+// list with contact history, walls, clock; with bonds the bond store and its counters). Importing
+// it restores the engine exactly, so the continued run is bit-identical to the uninterrupted one.
 #pragma once
 
 namespace dem
@@ -107,6 +107,21 @@ SystemState EngineImpl<Exec>::exportState() const
                               std::int64_t(needRebuild_),
                               std::int64_t(forcesStale_),
                               grains_.size()};
+    if (params_.bonds.enabled)
+    {
+        // Bonds by add-order indices (their internal ones, the per-grain index and the pairs'
+        // bonded flags follow from them at import).
+        const std::vector<int> first = bonds_.hostFirst(), second = bonds_.hostSecond();
+        s.integers["bonds.first"].assign(first.begin(), first.end());
+        s.integers["bonds.second"].assign(second.begin(), second.end());
+        const std::vector<double> state = bonds_.hostState();
+        const std::size_t count = first.size();
+        for (const BondField& f : bondFields())
+            s.reals[std::string("bonds.") + f.name].assign(
+                state.begin() + f.component * count,
+                state.begin() + (f.component + f.components) * count);
+        s.integers["bonds.counters"] = {std::int64_t(bondsFormed_), std::int64_t(bondsBroken_)};
+    }
     return s;
 }
 
@@ -219,6 +234,56 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     needRebuild_ = counters[3] != 0;
     forcesStale_ = counters[4] != 0;
     oldPairs_ = PairStorage<Exec>();
+    importBonds(s);
+}
+
+template <class Exec>
+void EngineImpl<Exec>::importBonds(const SystemState& s)
+{
+    using namespace stateDetail;
+    const bool stored = s.integers.find("bonds.first") != s.integers.end();
+    if (!params_.bonds.enabled)
+    {
+        if (stored && !entry(s.integers, "bonds.first").empty())
+            throw Error("importState: the state holds bonds, but this System has none "
+                        "(Parameters::bonds.enabled is false)");
+        return;
+    }
+    std::vector<int> first, second;
+    std::vector<double> state;
+    bondsFormed_ = bondsBroken_ = 0;
+    if (stored) // else a state written without bonds: none yet
+    {
+        const std::vector<std::int64_t>& a = entry(s.integers, "bonds.first");
+        const std::vector<std::int64_t>& b = entry(s.integers, "bonds.second");
+        const std::vector<std::int64_t>& counters = entry(s.integers, "bonds.counters");
+        if (b.size() != a.size() || counters.size() != 2)
+            throw Error("importState: 'bonds.second' or 'bonds.counters' has the wrong size");
+        const std::size_t count = a.size();
+        const std::int64_t n = grains_.size();
+        for (std::size_t k = 0; k < count; ++k)
+            if (a[k] < 0 || b[k] <= a[k] || b[k] >= n)
+                throw Error("importState: bond " + std::to_string(k) + " joins grains " +
+                            std::to_string(a[k]) + " and " + std::to_string(b[k]) +
+                            "; expected 0 <= first < second < " + std::to_string(n));
+        first.assign(a.begin(), a.end());
+        second.assign(b.begin(), b.end());
+        state.assign(kBondStateComponents * count, 0.0);
+        for (const BondField& f : bondFields())
+        {
+            const std::string name = std::string("bonds.") + f.name;
+            const std::vector<double>& v = entry(s.reals, name);
+            if (v.size() != std::size_t(f.components) * count)
+                throw Error("importState: '" + name + "' has " + std::to_string(v.size()) +
+                            " values for " + std::to_string(count) + " bonds");
+            std::copy(v.begin(), v.end(), state.begin() + f.component * count);
+        }
+        bondsFormed_ = std::size_t(counters[0]);
+        bondsBroken_ = std::size_t(counters[1]);
+    }
+    bonds_.assign(first, second, state);
+    bonds_.sort(exec_.policy()); // already sorted when exported; keeps the invariant anyway
+    indexBonds();
 }
 
 } // namespace detail

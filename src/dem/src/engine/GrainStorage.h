@@ -121,7 +121,10 @@ public:
     int size() const { return n_; }
     //- Any grain with a core segment (coreHalfLength > 0): the pair and step kernels take the
     //- capsule forms (CapsuleShapes), and the packed half-axis vectors exist.
-    bool hasCapsules() const { return capsules_; }
+    //- Also true in a system with bonds (setCapsulePath): the bond kernels take the capsule
+    //- forms, spheres in them are zero-length cores.
+    bool hasCapsules() const { return capsules_ || capsulePath_; }
+    void setCapsulePath(bool on) { capsulePath_ = on; }
 
     double* real(int f) { return thrust::raw_pointer_cast(reals_[f].data()); }
     int* integer(int f) { return thrust::raw_pointer_cast(ints_[f].data()); }
@@ -160,7 +163,7 @@ public:
         g.packedPositionRadius = thrust::raw_pointer_cast(packedPositionRadius_.data());
         g.packedVelocities = thrust::raw_pointer_cast(packedVelocities_.data());
         g.packedPositionAtBuild = thrust::raw_pointer_cast(packedPositionAtBuild_.data());
-        if (capsules_)
+        if (hasCapsules())
         {
             if (packedHalfAxis_.size() != 4 * std::size_t(n_))
                 packedHalfAxis_.resize(4 * std::size_t(n_));
@@ -278,6 +281,7 @@ private:
     Vec<double> packedPositionRadius_, packedVelocities_, packedPositionAtBuild_;
     Vec<double> packedHalfAxis_;
     bool capsules_ = false;
+    bool capsulePath_ = false;
     Vec<int> scratchInt_;
 };
 

@@ -22,6 +22,9 @@ struct PairStorage
 
     Vec<int> start = Vec<int>(1, 0), owner, partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
+    //- Systems with bonds: 1 for a pair whose grains are bonded (the bond acts, not the
+    //- contact law), set after every rebuild, formation and removal.
+    Vec<int> bonded;
     //- Loads per pair: kSphereReactionComponents, or kCapsuleReactionComponents in a system
     //- with capsules (set by the engine before the list is filled).
     int reactionComponents = kSphereReactionComponents;
@@ -44,6 +47,7 @@ struct PairStorage
         v.reaction = thrust::raw_pointer_cast(reaction.data());
         v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
         v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
+        v.bonded = thrust::raw_pointer_cast(bonded.data());
         return v;
     }
 
@@ -56,6 +60,7 @@ struct PairStorage
         incomingPair.swap(other.incomingPair);
         history.swap(other.history);
         reaction.swap(other.reaction);
+        bonded.swap(other.bonded);
         std::swap(reactionComponents, other.reactionComponents);
     }
 };

@@ -20,13 +20,16 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3;
+constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3,
+              kFlagDriven = 4;
 
-//- Half kick of grain i's (v, omega), respecting its flag.
+//- Half kick of grain i's (v, omega), respecting its flag (a driven grain keeps both).
 DEM_HD void kick(const GrainView& g, int i, int flag, double halfDt, double inverseMass,
                  double inverseInertia, const Vector3d& force, const Vector3d& torque, Vector3d& v,
                  Vector3d& omega)
 {
+    if (flag == kFlagDriven)
+        return;
     if (flag == kFlagFixed)
     {
         v.setZero();
@@ -46,10 +49,13 @@ DEM_HD void kick(const GrainView& g, int i, int flag, double halfDt, double inve
 }
 
 //- Half kick of a capsule's global angular momentum L by the torque, and its angular velocity
-//- omega = R I^-1 R^T L at orientation q; a capsule that is not free does not rotate.
+//- omega = R I^-1 R^T L at orientation q; a driven capsule keeps its omega (and L), any other
+//- that is not free does not rotate.
 DEM_HD void kickRotation(int flag, double halfDt, const Vector3d& torque, const Quaterniond& q,
                          const Vector3d& inertia, Vector3d& L, Vector3d& omega)
 {
+    if (flag == kFlagDriven)
+        return;
     if (flag != kFlagFree)
     {
         L.setZero();
@@ -62,9 +68,22 @@ DEM_HD void kickRotation(int flag, double halfDt, const Vector3d& torque, const 
 
 //- Drift of a free capsule's orientation over dt at constant L (freeRotation, RigidBody.h):
 //- stores q, refreshes its packed half-axis vector and returns omega at the new orientation.
+//- A driven capsule turns at its constant omega by |omega| dt.
 DEM_HD void rotate(const GrainView& g, int i, int flag, double dt, const Vector3d& inertia,
                    const Vector3d& L, Quaterniond& q, Vector3d& omega)
 {
+    if (flag == kFlagDriven)
+    {
+        const double angle = omega.norm() * dt;
+        if (angle > 0.0)
+        {
+            q = Quaterniond(Eigen::AngleAxisd(angle, omega / omega.norm())) * q;
+            q.normalize();
+            g.storeOrientation(i, q);
+            g.packHalfAxis(i);
+        }
+        return;
+    }
     if (flag != kFlagFree)
         return;
     q = freeRotation(q, inertia, L, dt);

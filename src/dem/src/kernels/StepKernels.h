@@ -16,6 +16,7 @@
 #include "kernels/TrilinearWeights.h"
 #include "kernels/Views.h"
 #include "kernels/VolumeSpread.h"
+#include "kernels/bonds/BondKernels.h"
 
 namespace dem
 {
@@ -69,12 +70,21 @@ struct FluidForceOnGrains
 struct SphereShapes
 {
     static constexpr bool kCapsules = false;
+    static constexpr bool kBonds = false;
     static constexpr int kReactionComponents = kSphereReactionComponents;
 };
 struct CapsuleShapes
 {
     static constexpr bool kCapsules = true;
+    static constexpr bool kBonds = false;
     static constexpr int kReactionComponents = kCapsuleReactionComponents;
+};
+//- A system with bonds (Parameters::bonds.enabled, spheres and capsules alike): the capsule
+//- forms, the pair kernel leaves bonded pairs to their bond (PairView::bonded) and GatherKick
+//- adds the bonds' loads after the pairs'. Without bonds nothing of this is compiled in.
+struct BondedCapsuleShapes : CapsuleShapes
+{
+    static constexpr bool kBonds = true;
 };
 
 //- Result of one contact: force and torque on i, torque on j, and their parts (the torques are
@@ -350,7 +360,11 @@ struct PairForceKernel
         const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
         const CapsulePairGeometry geometry =
             capsulePairGeometry(d, load(ax, 4 * i), load(ax, 4 * j), ri, rj);
-        const bool touching = geometry.touching;
+        // A bonded pair is the bond's: zero contact loads and a cleared history, so that the
+        // contact law starts afresh from the overlap it finds when the bond breaks.
+        bool touching = geometry.touching;
+        if constexpr (Shapes::kBonds)
+            touching = touching && pairs.bonded[p] == 0;
 
         constexpr int kReactionComponents = kCapsuleReactionComponents;
         const long cs = pairs.stride();
@@ -382,11 +396,12 @@ struct PairForceKernel
 };
 
 //- Ends a step: per-grain loads (grainLoads: gravity, drag, fluid, walls), then the loads of
-//- the pairs the grain owns and of those it is partner of (fixed order: results do not depend
-//- on the thread count), the second half kick and, within a step() call, the next step's kick
-//- and drift in the same pass. Capsules (coreHalfLength > 0, free) rotate in the body frame:
-//- half kick of the global angular momentum L, free rotation at constant L (RigidBody.h),
-//- omega = R I^-1 R^T L; spheres as always (omega += dt/2 T / I).
+//- the pairs the grain owns and of those it is partner of, then (BondedCapsuleShapes) of its
+//- bonds (fixed order: results do not depend on the thread count), the second half kick
+//- and, within a step() call, the next step's kick and drift in the same pass. Capsules
+//- (coreHalfLength > 0, free) rotate in the body frame: half kick of the global angular
+//- momentum L, free rotation at constant L (RigidBody.h), omega = R I^-1 R^T L; spheres as
+//- always (omega += dt/2 T / I). Driven grains keep v and omega (capsules turn at omega).
 template <class Shapes, class WallLaw>
 struct GatherKick
 {
@@ -394,7 +409,8 @@ struct GatherKick
     PairView pairs;
     GrainForceKernel<Shapes, WallLaw> grainLoads;
     double dt;
-    bool driftNext; //!< false: last step of the call, update the SoA fields
+    bool driftNext;   //!< false: last step of the call, update the SoA fields
+    BondGather bonds; //!< BondedCapsuleShapes only
 
     DEM_HD double operator()(int j) const
     {
@@ -425,6 +441,8 @@ struct GatherKick
                 torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
             }
         }
+        if constexpr (Shapes::kBonds)
+            bonds.add(j, force, torque);
         const int flag = g.flag[j];
         if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
             g.impulseX[j] += dt * force.x();

@@ -180,6 +180,7 @@ struct PairView
     double* reaction = nullptr;         //!< k{Sphere,Capsule}ReactionComponents per pair
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
+    const int* bonded = nullptr; //!< systems with bonds: 1 for a bonded pair (no contact law)
 
     //- Distance between two components of one pair's vector (1 when pair-major).
     DEM_HD long stride() const { return kPairMajorLayout ? 1 : componentStride; }

@@ -1,0 +1,225 @@
+// EngineBonds.h
+// EngineImpl: the bond store's upkeep (the grains' internal indices after every re-sort, the
+// per-grain index for the gather, the pairs' bonded flags), the bond force pass with the
+// removal of broken bonds, formation (frozenOnContact), addBonds, setGrainVelocities and the
+// bonds' read-back.
+#pragma once
+
+#include <thrust/copy.h>
+#include <thrust/iterator/counting_iterator.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+
+namespace dem
+{
+namespace detail
+{
+
+template <class Exec>
+void EngineImpl<Exec>::indexBonds()
+{
+    const int n = grains_.size();
+    internalOf_.resize(n);
+    Exec::forEach(n, InvertIds{grains_.integer(fId), thrust::raw_pointer_cast(internalOf_.data())});
+    bonds_.index(exec_.policy(), internalOf_, n);
+    // The pairs' flags, when the list is the current grains' (else the next rebuild sets them).
+    if (grainsAtLastBuild_ == n && long(pairs_.start.size()) == long(n) + 1)
+    {
+        pairs_.bonded.resize(pairs_.count());
+        Exec::forEach(n, MarkBondedPairs{pairs_.view(), bonds_.view(),
+                                         thrust::raw_pointer_cast(pairs_.bonded.data())});
+    }
+}
+
+template <class Exec>
+void EngineImpl<Exec>::computeBondForces(double dt)
+{
+    const int count = bonds_.count();
+    if (count == 0)
+        return;
+    bondBroken_.resize(count);
+    const double broken =
+        exec_.sumOf(count, BondForceKernel{grains_.view(), bonds_.view(), boxView(),
+                                           BondLaw::make(params_.bonds, dt),
+                                           thrust::raw_pointer_cast(bondBroken_.data())});
+    if (broken > 0.0)
+    {
+        bonds_.removeBroken(exec_.policy(), bondBroken_);
+        bondsBroken_ += std::size_t(std::llround(broken));
+        indexBonds();
+    }
+}
+
+template <class Exec>
+void EngineImpl<Exec>::formBonds()
+{
+    const int pairCount = int(pairs_.count());
+    if (pairCount == 0)
+        return;
+    formationPairs_.resize(pairCount);
+    const auto end =
+        thrust::copy_if(exec_.policy(), thrust::counting_iterator<int>(0),
+                        thrust::counting_iterator<int>(pairCount), formationPairs_.begin(),
+                        FormationCandidate{grains_.view(), pairs_.view(), boxView(),
+                                           thrust::raw_pointer_cast(pairs_.bonded.data())});
+    const int added = int(end - formationPairs_.begin());
+    if (added == 0)
+        return;
+    const int offset = bonds_.count();
+    bonds_.grow(exec_.policy(), added);
+    const BondParameters& p = params_.bonds;
+    Exec::forEach(added, FormBonds{grains_.view(), pairs_.view(), grains_.integer(fId),
+                                   thrust::raw_pointer_cast(formationPairs_.data()), bonds_.view(),
+                                   offset, p.seed, p.areaFraction[0], p.areaFraction[1]});
+    bonds_.sort(exec_.policy());
+    bondsFormed_ += std::size_t(added);
+    indexBonds();
+}
+
+template <class Exec>
+void EngineImpl<Exec>::addBonds(const std::vector<BondInit>& added)
+{
+    const int n = grains_.size();
+    std::vector<int> first = bonds_.hostFirst(), second = bonds_.hostSecond();
+    const std::vector<double> oldState = bonds_.hostState();
+    const std::size_t old = first.size(), m = old + added.size();
+    std::set<std::pair<int, int>> bonded;
+    for (std::size_t b = 0; b < old; ++b)
+        bonded.insert({first[b], second[b]});
+    std::vector<double> state(kBondStateComponents * m, 0.0);
+    for (int c = 0; c < kBondStateComponents; ++c)
+        std::copy(oldState.begin() + c * old, oldState.begin() + (c + 1) * old,
+                  state.begin() + c * m);
+    for (std::size_t k = 0; k < added.size(); ++k)
+    {
+        const BondInit& bond = added[k];
+        const std::string name = "addBonds: bond " + std::to_string(k) + " (grains " +
+                                 std::to_string(bond.first) + " and " +
+                                 std::to_string(bond.second) + ")";
+        for (int index : {bond.first, bond.second})
+            if (index < 0 || index >= n)
+                throw Error(name + ": grain index " + std::to_string(index) + " out of range [0, " +
+                            std::to_string(n) + ")");
+        if (bond.first == bond.second)
+            throw Error(name + " joins a grain to itself; a bond needs two different grains");
+        if (!(bond.patchRadius > 0.0) || !std::isfinite(bond.patchRadius))
+            throw Error(name + " has patchRadius " + std::to_string(bond.patchRadius) +
+                        "; it must be > 0 and finite");
+        const std::pair<int, int> ids{std::min(bond.first, bond.second),
+                                      std::max(bond.first, bond.second)};
+        if (!bonded.insert(ids).second)
+            throw Error(name + ": these grains are bonded already (one bond per pair)");
+        first.push_back(ids.first);
+        second.push_back(ids.second);
+        state[kBondPatchRadius * m + old + k] = bond.patchRadius;
+        state[kBondOnsetRadius * m + old + k] = bond.patchRadius;
+    }
+    bonds_.assign(first, second, state);
+    bonds_.sort(exec_.policy());
+    indexBonds();
+}
+
+template <class Exec>
+void EngineImpl<Exec>::setGrainVelocities(const std::vector<int>& indices,
+                                          const std::array<double, 3>& velocity,
+                                          const std::array<double, 3>& angularVelocity)
+{
+    const int n = grains_.size();
+    const std::vector<int> id = grains_.hostInt(fId);
+    std::vector<int> internal(n);
+    for (int i = 0; i < n; ++i)
+        internal[id[i]] = i;
+    std::vector<double> v = grains_.hostReal(fVelocity), omega = grains_.hostReal(fAngularVelocity),
+                        L = grains_.hostReal(fAngularMomentum),
+                        h = grains_.hostReal(fCoreHalfLength), q = grains_.hostReal(fOrientation),
+                        inertia = grains_.hostReal(fPrincipalInertia);
+    const Vector3d w(angularVelocity[0], angularVelocity[1], angularVelocity[2]);
+    for (int index : indices)
+    {
+        if (index < 0 || index >= n)
+            throw Error("setGrainVelocities: grain index " + std::to_string(index) +
+                        " out of range [0, " + std::to_string(n) + ")");
+        const std::size_t i = std::size_t(internal[index]);
+        for (int d = 0; d < 3; ++d)
+        {
+            v[d * n + i] = velocity[d];
+            omega[d * n + i] = angularVelocity[d];
+        }
+        if (h[i] > 0.0) // a capsule's rotational state is its angular momentum
+        {
+            const Quaterniond qi(q[i], q[n + i], q[2 * n + i], q[3 * n + i]);
+            const Vector3d Li = shapeDetail::angularMomentum(
+                qi, Vector3d(inertia[i], inertia[n + i], inertia[2 * n + i]), w);
+            for (int d = 0; d < 3; ++d)
+                L[d * n + i] = Li[d];
+        }
+    }
+    grains_.setReal(fVelocity, v);
+    grains_.setReal(fAngularVelocity, omega);
+    grains_.setReal(fAngularMomentum, L);
+}
+
+template <class Exec>
+BondData EngineImpl<Exec>::bonds() const
+{
+    BondData out;
+    const int count = bonds_.count();
+    if (count == 0)
+        return out;
+    EngineImpl& e = self();
+    bondReadback_.resize(7 * std::size_t(count));
+    double* scratch = thrust::raw_pointer_cast(bondReadback_.data());
+    Exec::forEach(count, BondReadback{e.grains_.view(), e.bonds_.view(), boxView(), scratch,
+                                      scratch + 3L * count, scratch + 6L * count});
+    std::vector<double> geometry(bondReadback_.size());
+    thrust::copy(bondReadback_.begin(), bondReadback_.end(), geometry.begin());
+    const std::vector<double> state = bonds_.hostState();
+    auto component = [&](int c, std::size_t b) { return state[std::size_t(c) * count + b]; };
+    out.first = bonds_.hostFirst();
+    out.second = bonds_.hostSecond();
+    out.normal.assign(geometry.begin(), geometry.begin() + 3L * count);
+    out.point.assign(geometry.begin() + 3L * count, geometry.begin() + 6L * count);
+    for (std::size_t b = 0; b < std::size_t(count); ++b)
+    {
+        out.patchRadius.push_back(component(kBondPatchRadius, b));
+        out.normalForce.push_back(component(kBondNormalForce, b));
+        out.twistMoment.push_back(component(kBondTwistMoment, b));
+        out.age.push_back(component(kBondAge, b));
+        out.softening.push_back(component(kBondSoftening, b) != 0.0 ? 1 : 0);
+        for (int d = 0; d < 3; ++d)
+        {
+            out.shearForce.push_back(component(kBondShearForce + d, b));
+            out.bendMoment.push_back(component(kBondBendMoment + d, b));
+        }
+    }
+    return out;
+}
+
+template <class Exec>
+BondCounts EngineImpl<Exec>::bondCounts() const
+{
+    BondCounts out;
+    out.formed = bondsFormed_;
+    out.broken = bondsBroken_;
+    const int count = bonds_.count();
+    out.intact = std::size_t(count);
+    if (count == 0)
+        return out;
+    const BondData data = bonds();
+    std::vector<double> touching(count);
+    thrust::copy(bondReadback_.begin() + 6L * count, bondReadback_.end(), touching.begin());
+    double radiusSum = 0.0;
+    for (int b = 0; b < count; ++b)
+    {
+        out.apart += touching[b] == 0.0 ? 1 : 0;
+        radiusSum += data.patchRadius[b];
+    }
+    out.meanPatchRadius = radiusSum / count;
+    return out;
+}
+
+} // namespace detail
+} // namespace dem

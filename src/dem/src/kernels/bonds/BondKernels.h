@@ -1,0 +1,356 @@
+// BondKernels.h
+// The bond store's kernels, written once for both backends: the per-bond force pass
+// (BondForceKernel: geometry and motion of the two grains, BondLaw::advance, a load record of
+// 9), the read-back of a bond's normal and contact point, the per-grain index of the bonds a
+// grain belongs to (the fixed-order gather in GatherKick), the bonded flag of each neighbour
+// pair (the pair kernel leaves bonded pairs to the bond) and the formation of new bonds.
+#pragma once
+
+#include "kernels/CapsuleGeometry.h"
+#include "kernels/Views.h"
+#include "kernels/bonds/BondLaw.h"
+
+#include <cstdint>
+
+namespace dem
+{
+namespace detail
+{
+inline namespace DEM_KERNEL_NS
+{
+
+//- A bond's stored state (BondState) as component-blocked arrays: component c of bond b at
+//- c * count + b. A new BondState member: a component here, in loadBondState/storeBondState
+//- and in BondStorage's table (export, import and re-sorting follow).
+enum BondStateComponent
+{
+    kBondNormalForce = 0,
+    kBondShearForce = 1, // 3
+    kBondTwistMoment = 4,
+    kBondBendMoment = 5, // 3
+    kBondPatchRadius = 8,
+    kBondOnsetRadius = 9,
+    kBondAge = 10,
+    kBondSoftening = 11, // 0 or 1
+    kBondStateComponents = 12
+};
+
+//- Per bond: force on A (3), torque on A (3), torque on B (3); on B the force is minus A's.
+constexpr int kBondLoadComponents = 9;
+
+//- The bonds as the kernels see them. Bond b joins grains a[b] (the lower add-order index,
+//- id first[b]) and bb[b] (id second[b]), internal indices of the current grain order.
+struct BondView
+{
+    int count = 0;
+    int* first = nullptr;    //!< add-order index of A
+    int* second = nullptr;   //!< add-order index of B
+    int* grainA = nullptr;   //!< internal index of A
+    int* grainB = nullptr;   //!< internal index of B
+    double* state = nullptr; //!< kBondStateComponents, component-blocked
+    double* loads = nullptr; //!< kBondLoadComponents per bond, bond by bond
+    //- Per grain (internal index) the bonds it belongs to: entries [grainStart[i],
+    //- grainStart[i + 1]) of grainEntry, each 2 b + end (end 0: the grain is A, 1: B), in
+    //- increasing b (the fixed order of the gather).
+    const int* grainStart = nullptr;
+    const int* grainEntry = nullptr;
+
+    DEM_HD BondState load(long b) const
+    {
+        const long s = count;
+        const double* x = state + b;
+        BondState st;
+        st.normalForce = x[kBondNormalForce * s];
+        st.shearForce = Vector3d(x[kBondShearForce * s], x[(kBondShearForce + 1) * s],
+                                 x[(kBondShearForce + 2) * s]);
+        st.twistMoment = x[kBondTwistMoment * s];
+        st.bendMoment = Vector3d(x[kBondBendMoment * s], x[(kBondBendMoment + 1) * s],
+                                 x[(kBondBendMoment + 2) * s]);
+        st.patchRadius = x[kBondPatchRadius * s];
+        st.onsetRadius = x[kBondOnsetRadius * s];
+        st.age = x[kBondAge * s];
+        st.softening = x[kBondSoftening * s] != 0.0;
+        st.broken = false;
+        return st;
+    }
+    DEM_HD void store(long b, const BondState& st) const
+    {
+        const long s = count;
+        double* x = state + b;
+        x[kBondNormalForce * s] = st.normalForce;
+        for (int c = 0; c < 3; ++c)
+        {
+            x[(kBondShearForce + c) * s] = st.shearForce[c];
+            x[(kBondBendMoment + c) * s] = st.bendMoment[c];
+        }
+        x[kBondTwistMoment * s] = st.twistMoment;
+        x[kBondPatchRadius * s] = st.patchRadius;
+        x[kBondOnsetRadius * s] = st.onsetRadius;
+        x[kBondAge * s] = st.age;
+        x[kBondSoftening * s] = st.softening ? 1.0 : 0.0;
+    }
+};
+
+//- Where a bond sits: the cores' closest points (valid whether the grains touch or not; a
+//- sphere's core is its centre). d = x_B - x_A (minimum image), aA, aB the half-axis vectors.
+//- delta = R_A + R_B - distance (overlap > 0, gap < 0); the contact point is the middle of the
+//- overlap or gap, c = (x_A + u_A a_A) + (R_A - delta/2) n. Cores that intersect have no
+//- direction: +z, as the contact geometry does.
+DEM_HD BondGeometry bondGeometry(const Vector3d& d, const Vector3d& aA, const Vector3d& aB,
+                                 double radiusA, double radiusB, double& delta)
+{
+    double uA, uB;
+    closestSegmentParameters(aA, aB, d, uA, uB);
+    const Vector3d separation = d - (uA * aA - uB * aB);
+    const double sumRadii = radiusA + radiusB;
+    const double distance2 = separation.squaredNorm();
+    const bool coincident = distance2 < kCoincidentFraction2 * sumRadii * sumRadii;
+    const double distance =
+        std::sqrt(coincident ? kCoincidentFraction2 * sumRadii * sumRadii : distance2);
+    BondGeometry g;
+    g.normal = coincident ? Vector3d(0.0, 0.0, 1.0) : Vector3d(separation / distance);
+    delta = sumRadii - distance;
+    g.offsetA = uA * aA + (radiusA - 0.5 * delta) * g.normal;
+    g.offsetB = g.offsetA - d;
+    g.radiusA = radiusA;
+    g.radiusB = radiusB;
+    return g;
+}
+
+//- Per bond: its geometry and motion at the packed state, one step of BondLaw::advance (the
+//- state is updated in place) and the load record. Returns 1 for a bond that broke this step
+//- (its loads are zero; the engine removes it before the gather), else 0: the engine sums it.
+//- law.dt may be 0 (the loads of freshly added or imported grains: evaluate, do not advance).
+struct BondForceKernel
+{
+    GrainView g;
+    BondView bonds;
+    BoxView box;
+    BondLaw law;
+    double* broken; //!< per bond: 1 broke this step, else 0
+
+    DEM_HD double operator()(int b) const
+    {
+        const long i = bonds.grainA[b], j = bonds.grainB[b];
+        const double* xr = g.packedPositionRadius;
+        const double* vw = g.packedVelocities;
+        const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
+        const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
+        double delta;
+        const BondGeometry geometry =
+            bondGeometry(box.separation(xi, xj), g.packedHalfAxisOf(i), g.packedHalfAxisOf(j),
+                         xr[4 * i + 3], xr[4 * j + 3], delta);
+        BondMotion motion;
+        motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
+        motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
+        motion.omegaA = Vector3d(vw[8 * i + 4], vw[8 * i + 5], vw[8 * i + 6]);
+        motion.omegaB = Vector3d(vw[8 * j + 4], vw[8 * j + 5], vw[8 * j + 6]);
+        motion.inverseMassA = vw[8 * i + 3];
+        motion.inverseMassB = vw[8 * j + 3];
+        BondState state = bonds.load(b);
+        const BondLoads loads = law.advance(state, geometry, motion);
+        bonds.store(b, state);
+        double* out = bonds.loads + long(kBondLoadComponents) * b;
+        for (int c = 0; c < 3; ++c)
+        {
+            out[c] = state.broken ? 0.0 : loads.forceOnA[c];
+            out[3 + c] = state.broken ? 0.0 : loads.torqueOnA[c];
+            out[6 + c] = state.broken ? 0.0 : loads.torqueOnB[c];
+        }
+        broken[b] = state.broken ? 1.0 : 0.0;
+        return broken[b];
+    }
+};
+
+//- Grain j's bond loads, added after its pairs' in the fixed order of its bond entries.
+struct BondGather
+{
+    const int* grainStart = nullptr;
+    const int* grainEntry = nullptr;
+    const double* loads = nullptr;
+
+    DEM_HD void add(int j, Vector3d& force, Vector3d& torque) const
+    {
+        for (int e = grainStart[j]; e < grainStart[j + 1]; ++e)
+        {
+            const int entry = grainEntry[e];
+            const bool isA = (entry & 1) == 0;
+            const double* l = loads + long(kBondLoadComponents) * (entry >> 1);
+            const Vector3d f(l[0], l[1], l[2]);
+            force += isA ? f : Vector3d(-f);
+            const double* t = l + (isA ? 3 : 6);
+            torque += Vector3d(t[0], t[1], t[2]);
+        }
+    }
+};
+
+//- Read-back: the unit normal (3) and the contact point (3, wrapped into the periodic box) of
+//- each bond at the SoA state, and whether its grains touch (1) or not (0).
+struct BondReadback
+{
+    GrainView g;
+    BondView bonds;
+    BoxView box;
+    double* normal; //!< 3 per bond
+    double* point;  //!< 3 per bond
+    double* touching;
+
+    DEM_HD void operator()(int b) const
+    {
+        const int i = bonds.grainA[b], j = bonds.grainB[b];
+        const Vector3d xi = g.position(i);
+        double delta;
+        const BondGeometry geometry = bondGeometry(box.separation(xi, g.position(j)), g.halfAxis(i),
+                                                   g.halfAxis(j), g.radius[i], g.radius[j], delta);
+        Vector3d c = xi + geometry.offsetA;
+        for (int d = 0; d < 2; ++d)
+            if (box.periodic[d])
+                c[d] -= box.length[d] * std::floor((c[d] - box.lower[d]) / box.length[d]);
+        for (int d = 0; d < 3; ++d)
+        {
+            normal[3L * b + d] = geometry.normal[d];
+            point[3L * b + d] = c[d];
+        }
+        touching[b] = delta > 0.0 ? 1.0 : 0.0;
+    }
+};
+
+//- The sort key of a bond: (first, second) in one 64-bit integer.
+struct BondKey
+{
+    DEM_HD std::int64_t operator()(int first, int second) const
+    {
+        return std::int64_t(first) << 32 | std::int64_t(std::uint32_t(second));
+    }
+};
+
+//- Stencil of the bonds kept (a broken flag of 0).
+struct IsZeroValue
+{
+    DEM_HD bool operator()(double x) const { return x == 0.0; }
+};
+
+//- internalOf[id[i]] = i: the internal index of each add-order index.
+struct InvertIds
+{
+    const int* id;
+    int* internalOf;
+    DEM_HD void operator()(int i) const { internalOf[id[i]] = i; }
+};
+
+//- Each bond's internal grain indices, and the keys of its two per-grain entries.
+struct RemapBonds
+{
+    BondView bonds;
+    const int* internalOf;
+    int* entryKey; //!< 2 per bond: the grain of entry 2 b + end
+
+    DEM_HD void operator()(int b) const
+    {
+        const int a = internalOf[bonds.first[b]], bb = internalOf[bonds.second[b]];
+        bonds.grainA[b] = a;
+        bonds.grainB[b] = bb;
+        entryKey[2L * b] = a;
+        entryKey[2L * b + 1] = bb;
+    }
+};
+
+//- Per grain i: mark the pairs it owns whose partner it is bonded to (bonded[p] = 1).
+struct MarkBondedPairs
+{
+    PairView pairs;
+    BondView bonds;
+    int* bonded;
+
+    DEM_HD void operator()(int i) const
+    {
+        for (int p = pairs.start[i]; p < pairs.start[i + 1]; ++p)
+        {
+            const int j = pairs.partner[p];
+            int mark = 0;
+            for (int e = bonds.grainStart[i]; e < bonds.grainStart[i + 1]; ++e)
+            {
+                const int entry = bonds.grainEntry[e];
+                const int b = entry >> 1;
+                const int other = (entry & 1) == 0 ? bonds.grainB[b] : bonds.grainA[b];
+                mark |= other == j ? 1 : 0;
+            }
+            bonded[p] = mark;
+        }
+    }
+};
+
+//- Formation (frozenOnContact): a neighbour pair whose grains touch and are not bonded.
+struct FormationCandidate
+{
+    GrainView g;
+    PairView pairs;
+    BoxView box;
+    const int* bonded;
+
+    DEM_HD bool operator()(int p) const
+    {
+        if (bonded[p])
+            return false;
+        const long i = pairs.owner[p], j = pairs.partner[p];
+        const double* xr = g.packedPositionRadius;
+        const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
+        const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
+        return capsulePairGeometry(box.separation(xi, xj), g.packedHalfAxisOf(i),
+                                   g.packedHalfAxisOf(j), xr[4 * i + 3], xr[4 * j + 3])
+            .touching;
+    }
+};
+
+//- A number in [0, 1) from (seed, first, second) alone (splitmix64 finaliser over the three):
+//- a new bond's size does not depend on threads, backend or the order grains are stored in.
+DEM_HD double bondHash(std::uint64_t seed, int first, int second)
+{
+    std::uint64_t z =
+        seed ^ (std::uint64_t(std::uint32_t(first)) << 32 | std::uint64_t(std::uint32_t(second)));
+    for (int round = 0; round < 2; ++round)
+    {
+        z += 0x9e3779b97f4a7c15ULL;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        z = z ^ (z >> 31);
+    }
+    return double(z >> 11) * (1.0 / 9007199254740992.0); // 53 bits
+}
+
+//- New bond k (stored at offset + k) on candidate pair pair[k]: ids in order, zero loads,
+//- r_b^2 = f r_min^2 with f uniform in [fractionLow, fractionHigh] (r_min the smaller
+//- dilation radius).
+struct FormBonds
+{
+    GrainView g;
+    PairView pairs;
+    const int* id;
+    const int* pair;
+    BondView bonds; //!< the store after growing (count = old + new)
+    int offset;
+    std::uint64_t seed;
+    double fractionLow, fractionHigh;
+
+    DEM_HD void operator()(int k) const
+    {
+        const int p = pair[k];
+        const int i = pairs.owner[p], j = pairs.partner[p];
+        const int idI = id[i], idJ = id[j];
+        const int b = offset + k;
+        bonds.first[b] = idI < idJ ? idI : idJ;
+        bonds.second[b] = idI < idJ ? idJ : idI;
+        const double ri = g.radius[i], rj = g.radius[j];
+        const double rMin = ri < rj ? ri : rj;
+        const double f = fractionLow + (fractionHigh - fractionLow) *
+                                           bondHash(seed, bonds.first[b], bonds.second[b]);
+        BondState st;
+        st.patchRadius = std::sqrt(f) * rMin;
+        st.onsetRadius = st.patchRadius;
+        bonds.store(b, st);
+    }
+};
+
+} // namespace DEM_KERNEL_NS
+} // namespace detail
+} // namespace dem
