@@ -2,13 +2,21 @@
 // The bond evaluator, written once for both backends: one frozen ice contact (Johnson & Hopkins
 // 2005) between grains A (the lower add-order index) and B, advanced by one step. The mechanisms
 // (elastic patch, grain-boundary creep, compressive creep, strength and softening, sintering)
-// are families chosen by BondParameters; each model is a small evaluator in this directory.
-// INTERFACE SKELETON (issue 11 plan): the types and the signature below are fixed; the body of
-// BondLaw::advance is the bond-law helper's.
+// are families chosen by BondParameters; each model is a small evaluator in this directory, its
+// constants computed once on the host by BondLaw::make. doc/EQUATIONS.md, "Bonds", has the
+// equations, the sign rules and the choices.
 #pragma once
 
 #include "backends/HostDevice.h"
 #include "dem/Parameters.h"
+#include "kernels/bonds/BondGeometry.h"
+#include "kernels/bonds/ElasticPatch.h"
+#include "kernels/bonds/IceStrength.h"
+#include "kernels/bonds/MaxwellCreep.h"
+#include "kernels/bonds/PowerLawCreep.h"
+#include "kernels/bonds/Sintering.h"
+
+#include <cmath>
 
 namespace dem
 {
@@ -32,13 +40,7 @@ struct BondState
     bool broken = false;                    //!< set by advance: remove the bond
 };
 
-//- Where the bond sits now: the cores' closest points, whether the grains touch or not.
-struct BondGeometry
-{
-    Vector3d normal;           //!< unit, from A to B
-    Vector3d offsetA, offsetB; //!< contact point minus each centre (point: middle of gap/overlap)
-    double radiusA, radiusB;   //!< dilation radii
-};
+// BondGeometry (where the bond sits) and bondGeometry() are in BondGeometry.h.
 
 //- How the two grains move (centres' velocities, angular velocities, inverse masses).
 struct BondMotion
@@ -59,12 +61,29 @@ struct BondLaw
 {
     BondParameters p; // plain struct of numbers and enums
     double dt = 0.0;
+    // Each mechanism's evaluator with its constants (make() fills them).
+    MaxwellCreep shearCreep, twistCreep, bendCreep;
+    PowerLawCreep compressiveCreep;
+    IceStrength strength;
+    Sintering sintering;
 
+    //- Relaxation times of grain-boundary creep: tau_shear = tau_twist = nu_s / (k_se/k_ne E),
+    //- tau_bend = nu_s / E (the viscosity over the patch's modulus in that mode).
     static BondLaw make(const BondParameters& parameters, double timeStep)
     {
         BondLaw law;
         law.p = parameters;
         law.dt = timeStep;
+        const bool maxwell = parameters.creep == BondCreep::maxwell;
+        const double E = parameters.youngsModulus, nu = parameters.contactViscosity;
+        const double tauShear = nu / (parameters.shearToNormalStiffness * E);
+        const double tauBend = nu / E;
+        law.shearCreep = MaxwellCreep::make(maxwell && parameters.shearCreep, tauShear, timeStep);
+        law.twistCreep = MaxwellCreep::make(maxwell && parameters.twistCreep, tauShear, timeStep);
+        law.bendCreep = MaxwellCreep::make(maxwell && parameters.bendCreep, tauBend, timeStep);
+        law.compressiveCreep = PowerLawCreep::make(parameters, timeStep);
+        law.strength = IceStrength::make(parameters);
+        law.sintering = Sintering::make(parameters, timeStep);
         return law;
     }
 
@@ -72,11 +91,90 @@ struct BondLaw
     //- s.broken when the bond breaks (its loads this step are then zero).
     DEM_HD BondLoads advance(BondState& s, const BondGeometry& g, const BondMotion& m) const
     {
-        (void)s;
-        (void)g;
-        (void)m;
         BondLoads loads{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-        return loads; // placeholder until the bond-law branch lands
+        if (s.broken)
+            return loads;
+        const Vector3d& n = g.normal;
+        const double meanRadius = 0.5 * (g.radiusA + g.radiusB);
+
+        // 1. Stored in-plane loads into the current plane, turning with the pair's mean rotation.
+        const Vector3d theta = (0.5 * dt) * (m.omegaA + m.omegaB);
+        s.shearForce = rotateIntoPlane(s.shearForce, n, theta);
+        s.bendMoment = rotateIntoPlane(s.bendMoment, n, theta);
+
+        // 2. Elastic increments with the patch at the start of the step, and creep.
+        const PatchIncrement du = patchIncrement(n, g.offsetA, g.offsetB, m.velocityA, m.velocityB,
+                                                 m.omegaA, m.omegaB, dt);
+        PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
+                                                p.shearToNormalStiffness, meanRadius);
+        s.normalForce += patch.normalStiffness * patch.area * du.normal;
+        s.normalForce = compressiveCreep.relax(s.normalForce, patch.area);
+        s.shearForce =
+            shearCreep.update(s.shearForce, Vector3d(patch.shearStiffness * patch.area * du.shear));
+        s.twistMoment =
+            twistCreep.update(s.twistMoment, patch.shearStiffness * patch.twistInertia * du.twist);
+        s.bendMoment = bendCreep.update(
+            s.bendMoment, Vector3d(patch.normalStiffness * patch.bendInertia * du.bend));
+
+        // 3. Sintering grows an intact patch under compression (new material, no load).
+        if (!s.softening)
+        {
+            const double reducedRadius = g.radiusA * g.radiusB / (g.radiusA + g.radiusB);
+            s.patchRadius = sintering.grow(s.patchRadius, s.normalForce, reducedRadius);
+            s.onsetRadius = s.patchRadius;
+        }
+
+        // 4. Strength: past it, the patch shrinks along the softening branch or breaks.
+        if (strength.on)
+        {
+            patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
+                                       meanRadius);
+            const double x =
+                strength.loadRatio(s.normalForce, s.shearForce, s.twistMoment, s.bendMoment,
+                                   patch.radius, patch.area, patch.bendInertia, patch.twistInertia);
+            if (x > 1.0)
+            {
+                s.softening = true;
+                const double fraction = strength.areaFraction(x);
+                const double target = fraction > 0.0 ? s.onsetRadius * std::sqrt(fraction) : 0.0;
+                if (!(target >= strength.brokenFraction * meanRadius))
+                {
+                    s.broken = true;
+                    return loads;
+                }
+                if (target < s.patchRadius)
+                {
+                    const double radiusRatio = target / s.patchRadius;
+                    const double areaRatio = radiusRatio * radiusRatio;
+                    const double inertiaRatio = areaRatio * areaRatio;
+                    s.normalForce *= areaRatio;
+                    s.shearForce *= areaRatio;
+                    s.twistMoment *= inertiaRatio;
+                    s.bendMoment *= inertiaRatio;
+                    s.patchRadius = target;
+                }
+            }
+        }
+        s.age += dt;
+
+        // 5. Loads: the elastic loads and the dashpots of the patch as it is now.
+        patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
+                                   meanRadius);
+        const double inverseMassSum = m.inverseMassA + m.inverseMassB;
+        // Two immovable grains (no inverse mass): no dashpot rather than an infinite one.
+        const double reducedMass = inverseMassSum > 0.0 ? 1.0 / inverseMassSum : 0.0;
+        const double normalDamping = 2.0 * p.normalDampingRatio *
+                                     std::sqrt(reducedMass * patch.normalStiffness * patch.area);
+        const double shearDamping =
+            2.0 * p.shearDampingRatio * std::sqrt(reducedMass * patch.shearStiffness * patch.area);
+        const double normalSpeed = du.velocity.dot(n);
+        const Vector3d force = (s.normalForce + normalDamping * normalSpeed) * n + s.shearForce +
+                               shearDamping * (du.velocity - normalSpeed * n);
+        const Vector3d moment = s.twistMoment * n + s.bendMoment;
+        loads.forceOnA = force;
+        loads.torqueOnA = g.offsetA.cross(force) + moment;
+        loads.torqueOnB = -g.offsetB.cross(force) - moment;
+        return loads;
     }
 };
 
