@@ -82,6 +82,51 @@ def read_vtp(path):
     return out
 
 
+def read_vtp_lines(path):
+    """Points, line cells and cell arrays of a VTK XML PolyData file of
+    lines (the bonds' .vtp), read by VTK's vtkXMLPolyDataReader:
+    {"points": (n, 3), "lines": (m, 2) point indices, name: (m,) or
+    (m, components)}."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    if not os.path.isfile(path) or not reader.CanReadFile(path):
+        raise ValueError(f"{path} is not a VTK XML PolyData file")
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    points = data.GetPoints()
+    out = {"points": np.zeros((0, 3)) if points is None
+           else np.array(vtk_to_numpy(points.GetData())).reshape(-1, 3)}
+    lines = []
+    cells = data.GetLines()
+    cells.InitTraversal()
+    from vtkmodules.vtkCommonCore import vtkIdList
+    ids = vtkIdList()
+    while cells.GetNextCell(ids):
+        lines.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+    out["lines"] = np.array(lines, dtype=int).reshape(-1, 2)
+    cell_data = data.GetCellData()
+    for i in range(cell_data.GetNumberOfArrays()):
+        array = cell_data.GetArray(i)
+        out[array.GetName()] = np.array(vtk_to_numpy(array))
+    return out
+
+
+def read_columns(path):
+    """A function object's table (postProcessing/<name>/<time>/<file>.dat):
+    {column name: values}, the names from the last '#' line before the
+    data ('# time name ...')."""
+    names = None
+    for line in open(path):
+        if line.startswith("#"):
+            names = line[1:].split()
+        else:
+            break
+    values = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: values[:, k] for k, name in enumerate(names)}
+
+
 def grain_files(case, series_name="grains"):
     """(time, path) of the grains' .vtp files in the order of the VTK file
     series <case>/VTK/grains.vtp.series (JSON) that ParaView opens

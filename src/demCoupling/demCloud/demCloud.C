@@ -46,6 +46,7 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
+    bonds_(properties_),
     grid_(mesh),
     walls_(properties_, grid_.grid(), mesh.time().value()),
     system_(),

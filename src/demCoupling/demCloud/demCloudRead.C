@@ -63,6 +63,7 @@ dem::Parameters Foam::demCloud::readParameters() const
         dict.found("wallContact")
       ? contactLaw::New(dict.subDict("wallContact"))->material()
       : p.grainGrain;
+    p.bonds = bonds_.parameters();
 
     // The box is the mesh's horizontal extent, periodic where the mesh
     // sides are cyclic

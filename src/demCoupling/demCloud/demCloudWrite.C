@@ -14,6 +14,7 @@
 #include "grainsFile.H"
 #include "finiteCheck.H"
 #include "grainVtkWriter.H"
+#include "bondVtkWriter.H"
 #include "Time.H"
 #include "OSspecific.H"
 
@@ -66,6 +67,24 @@ bool Foam::demCloud::writeObject
         (
             vtkDir/"capsules.vtp.series",
             surfaces,
+            readScalar(runTime.timeName())
+        );
+    }
+    if (bonds_.writeVtk())
+    {
+        const fileName bondsVtp(vtkDir/("bonds_" + runTime.timeName() + ".vtp"));
+        bondVtkWriter::writeVtp
+        (
+            bondsVtp,
+            demLibraryCall("reading the bonds", [&]{ return system_->bonds(); }),
+            g,
+            system_->parameters(),
+            asciiOutput_
+        );
+        grainVtkWriter::writeSeries
+        (
+            vtkDir/"bonds.vtp.series",
+            bondsVtp,
             readScalar(runTime.timeName())
         );
     }

@@ -82,36 +82,6 @@ std::array<double, 3> rotate(const double* q, const std::array<double, 3>& v)
 }
 
 
-void writePolyData
-(
-    const Foam::fileName& path,
-    vtkPolyData* data,
-    const bool ascii
-)
-{
-    // Whole or not at all (temporary renamed into place, see atomicFile):
-    // a reader (ParaView following a running case) never sees half a file
-    const Foam::atomicFile file(path);
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(file.tmpPath().c_str());
-    writer->SetInputData(data);
-    if (ascii)
-    {
-        writer->SetDataModeToAscii();
-    }
-    else
-    {
-        writer->SetDataModeToBinary();
-    }
-    if (!writer->Write())
-    {
-        FatalErrorInFunction
-            << "VTK could not write " << path << Foam::nl
-            << Foam::exit(Foam::FatalError);
-    }
-    file.commit();
-}
-
 } // End anonymous namespace
 
 
@@ -294,6 +264,37 @@ void Foam::grainVtkWriter::writeSurfaceVtp
     data->GetPointData()->AddArray(grain);
     data->GetPointData()->AddArray(displacement);
     writePolyData(path, data, ascii);
+}
+
+
+void Foam::grainVtkWriter::writePolyData
+(
+    const fileName& path,
+    vtkPolyData* data,
+    const bool ascii
+)
+{
+    // Whole or not at all (temporary renamed into place, see atomicFile):
+    // a reader (ParaView following a running case) never sees half a file
+    const atomicFile file(path);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(file.tmpPath().c_str());
+    writer->SetInputData(data);
+    if (ascii)
+    {
+        writer->SetDataModeToAscii();
+    }
+    else
+    {
+        writer->SetDataModeToBinary();
+    }
+    if (!writer->Write())
+    {
+        FatalErrorInFunction
+            << "VTK could not write " << path << nl
+            << exit(FatalError);
+    }
+    file.commit();
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "inputChecks.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -43,6 +44,62 @@ Foam::scalar Foam::inputChecks::getInOpenRange
             << "Entry '" << key << "' in " << dict.name()
             << " must lie in (" << lower << ", " << upper << "), found "
             << value << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::scalar Foam::inputChecks::getPositiveOrDefault
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar defaultValue
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, defaultValue);
+
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name()
+            << " must be > 0, found " << value << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::scalar Foam::inputChecks::getInRange
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar defaultValue,
+    const scalar lower,
+    const scalar upper
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, defaultValue);
+
+    if (!(value >= lower && value <= upper))
+    {
+        // Ten digits: limits as a user writes them (-273.15, not
+        // -273.14999999999998 at a case's writePrecision 17)
+        OStringStream rule;
+        rule.precision(10);
+        if (upper < GREAT)
+        {
+            rule<< "must lie in [" << lower << ", " << upper << "]";
+        }
+        else
+        {
+            rule<< "must be >= " << lower;
+        }
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' in " << dict.name() << " "
+            << rule.str().c_str() << ", found " << value << nl
             << exit(FatalIOError);
     }
 

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactLaw.H"
-#include "OStringStream.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,26 +26,7 @@ Foam::scalar Foam::contactLaw::getInRange
     const scalar upper
 )
 {
-    const scalar value = dict.getOrDefault<scalar>(key, defaultValue);
-
-    if (!(value >= lower && value <= upper))
-    {
-        OStringStream rule;
-        if (upper < GREAT)
-        {
-            rule<< "must lie in [" << lower << ", " << upper << "]";
-        }
-        else
-        {
-            rule<< "must be >= " << lower;
-        }
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' in " << dict.name() << " "
-            << rule.str().c_str() << ", found " << value << nl
-            << exit(FatalIOError);
-    }
-
-    return value;
+    return inputChecks::getInRange(dict, key, defaultValue, lower, upper);
 }
 
 

@@ -1,0 +1,141 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "bondVtkWriter.H"
+#include "grainVtkWriter.H"
+#include "error.H"
+
+#include <cmath>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A named cell array of one component per bond
+template<class Array>
+vtkNew<Array>& named(vtkNew<Array>& array, const char* name, vtkIdType n)
+{
+    array->SetName(name);
+    array->SetNumberOfTuples(n);
+    return array;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bondVtkWriter::writeVtp
+(
+    const fileName& path,
+    const dem::BondData& bonds,
+    const dem::GrainData& grains,
+    const dem::Parameters& parameters,
+    const bool ascii
+)
+{
+    const vtkIdType n = bonds.first.size();
+    const vtkIdType nGrains = grains.radius.size();
+    const auto sized = [n](const auto& values, const vtkIdType perBond)
+    {
+        return vtkIdType(values.size()) == perBond*n;
+    };
+    if
+    (
+        !sized(bonds.second, 1) || !sized(bonds.patchRadius, 1)
+     || !sized(bonds.normalForce, 1) || !sized(bonds.shearForce, 3)
+     || !sized(bonds.age, 1) || !sized(bonds.softening, 1)
+    )
+    {
+        FatalErrorInFunction
+            << "The DEM library gave incomplete bond data (" << label(n)
+            << " bonds) for " << path << nl << exit(FatalError);
+    }
+
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(2*n);
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkDoubleArray> patchRadius, normalForce, shearForce, age;
+    vtkNew<vtkIntArray> softening, first, second;
+    named(patchRadius, "patchRadius", n);
+    named(normalForce, "normalForce", n);
+    named(shearForce, "shearForce", n);
+    named(age, "age", n);
+    named(softening, "softening", n);
+    named(first, "first", n);
+    named(second, "second", n);
+
+    for (vtkIdType b = 0; b < n; ++b)
+    {
+        const int i = bonds.first[b], j = bonds.second[b];
+        if (i < 0 || j < 0 || i >= nGrains || j >= nGrains)
+        {
+            FatalErrorInFunction
+                << "The DEM library gave bond " << label(b) << " between"
+                << " grains " << i << " and " << j << " of " << label(nGrains)
+                << " for " << path << nl << exit(FatalError);
+        }
+        double a[3], c[3];
+        for (int d = 0; d < 3; ++d)
+        {
+            a[d] = grains.position[3*i + d];
+            double delta = grains.position[3*j + d] - a[d];
+            if (d < 2 && parameters.periodic[d])
+            {
+                const double L = parameters.boxUpper[d] - parameters.boxLower[d];
+                delta -= L*std::round(delta/L);
+            }
+            c[d] = a[d] + delta;
+        }
+        points->SetPoint(2*b, a);
+        points->SetPoint(2*b + 1, c);
+        const vtkIdType ends[2] = {2*b, 2*b + 1};
+        lines->InsertNextCell(2, ends);
+
+        const double* s = &bonds.shearForce[3*b];
+        patchRadius->SetValue(b, bonds.patchRadius[b]);
+        normalForce->SetValue(b, bonds.normalForce[b]);
+        shearForce->SetValue(b, std::sqrt(s[0]*s[0] + s[1]*s[1] + s[2]*s[2]));
+        age->SetValue(b, bonds.age[b]);
+        softening->SetValue(b, bonds.softening[b]);
+        first->SetValue(b, i);
+        second->SetValue(b, j);
+    }
+
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetLines(lines);
+    for
+    (
+        vtkDataArray* array :
+        {
+            static_cast<vtkDataArray*>(patchRadius.Get()),
+            static_cast<vtkDataArray*>(normalForce.Get()),
+            static_cast<vtkDataArray*>(shearForce.Get()),
+            static_cast<vtkDataArray*>(age.Get()),
+            static_cast<vtkDataArray*>(softening.Get()),
+            static_cast<vtkDataArray*>(first.Get()),
+            static_cast<vtkDataArray*>(second.Get())
+        }
+    )
+    {
+        data->GetCellData()->AddArray(array);
+    }
+
+    grainVtkWriter::writePolyData(path, data, ascii);
+}
+
+
+// ************************************************************************* //

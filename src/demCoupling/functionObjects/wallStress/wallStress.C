@@ -1,0 +1,141 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "wallStress.H"
+#include "demLibraryCall.H"
+#include "demCloud.H"
+#include "wallEnclosure.H"
+#include "IOdictionary.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(wallStress, 0);
+    addToRunTimeSelectionTable(functionObject, wallStress, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::wordList Foam::functionObjects::wallStress::wallNames
+(
+    const label nWalls
+) const
+{
+    wordList names;
+    const IOdictionary& properties =
+        mesh_.lookupObject<IOdictionary>("demProperties");
+    if (properties.isDict("walls"))
+    {
+        for (const entry& e : properties.subDict("walls"))
+        {
+            if (e.isDict())
+            {
+                names.append(e.keyword());
+            }
+        }
+    }
+    names.resize(nWalls);
+    for (label w = 0; w < nWalls; ++w)
+    {
+        if (names[w].empty())
+        {
+            names[w] = "wall" + Foam::name(w);
+        }
+    }
+    return names;
+}
+
+
+void Foam::functionObjects::wallStress::writeFileHeader
+(
+    Ostream& os,
+    const label nWalls
+)
+{
+    writeHeader(os, "Wall stresses (doc/CASE-FORMAT.md, function objects)");
+    writeCommented(os, "time");
+    for (const word& wall : wallNames(nWalls))
+    {
+        for (const char* column : {"_position", "_force", "_stress"})
+        {
+            writeTabbed(os, wall + column);
+        }
+    }
+    os << endl;
+    headerWritten_ = true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::wallStress::wallStress
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    headerWritten_(false)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::wallStress::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+    return true;
+}
+
+
+bool Foam::functionObjects::wallStress::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::wallStress::write()
+{
+    // Reads of the DEM library: whatever it throws ends as a FatalError
+    return demLibraryCall
+    (
+        "function object " + name(),
+        [&]
+        {
+            const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
+            const wallEnclosure box(cloud.system(), cloud.grid().grid());
+            const label nWalls = box.walls().size();
+
+            Ostream& os = file();
+            if (!headerWritten_)
+            {
+                writeFileHeader(os, nWalls);
+            }
+            writeCurrentTime(os);
+            for (label w = 0; w < nWalls; ++w)
+            {
+                const dem::WallData& wall = box.walls()[w];
+                os  << tab << wall.position << tab << wall.grainForce
+                    << tab << wall.grainForce/box.area(w);
+            }
+            os << endl;
+            return true;
+        }
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,174 @@
+"""The wallStress and packingStatistics function objects (issue 11) on a
+real demFoam run, checked against conservation laws: tests/cases/grainColumn
+(256 spheres, 2600 kg/m^3, periodic 0.1 m x 0.1 m box, fixed base, a lid
+under a normal stress sigma0 = 1e4 Pa) settled to rest under gravity."""
+
+import numpy as np
+
+from darcydem.case import Case
+from darcydem.foamfiles import grain_files, read_columns, read_vtp, read_vtp_lines
+
+DEM = "constant/demProperties"
+G = 9.81
+AREA = 0.1 * 0.1            # the periodic box's x-y area [m^2]
+SIGMA0 = 1e4                # the lid's normal stress in the template [Pa]
+STIFFNESS = 1e6             # the template's k_n [N/m]
+DRAG = 0.5                  # viscous drag [N s/m], brings the packing to rest
+WALL_COLUMNS = ["time"] + [f"{w}_{q}" for w in ("bottom", "top")
+                           for q in ("position", "force", "stress")]
+PACKING_COLUMNS = ["time", "density", "solidFraction", "coordinationNumber", "bondsIntact",
+                   "bondsFormed", "bondsBroken", "bondsApart", "meanPatchRadius",
+                   "lidPosition", "lidVelocity", "strainRate", "bulkViscosity"]
+FUNCTIONS = """{
+    wallStress { type wallStress; libs ("libdemCoupling.so");
+                 writeControl timeStep; writeInterval 10; }
+    packing    { type packingStatistics; libs ("libdemCoupling.so");
+                 writeControl timeStep; writeInterval 10; }
+}"""
+
+
+def settled_column(name, end_time=1.0):
+    """grainColumn run by demFoam to end_time with the two function objects
+    every 10 fluid steps and the grains written every 0.1 s."""
+    c = Case("grainColumn", name)
+    c.set("system/controlDict", "endTime", end_time)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 100)
+    c.set("system/controlDict", "functions", FUNCTIONS)
+    c.set(DEM, "viscousDrag", DRAG)
+    c.run("blockMesh")
+    c.run("demFoam")
+    return c
+
+
+def grain_masses(c):
+    """Masses and volumes of the start grains (spheres, 0/grains)."""
+    r = np.loadtxt(c.file("0/grains"), comments="#", ndmin=2)[:, 3]
+    volume = 4 / 3 * np.pi * r**3
+    return 2600 * volume, volume
+
+
+def test_lid_and_base_carry_the_load_of_a_packing_at_rest():
+    """Momentum balance of the packing at rest (t = 1 s): the lid's stress is
+    sigma0, the grains push the base down with sigma0 A + M g. Tolerance:
+    the contact forces the grains' remaining motion can carry, sum of
+    (sqrt(k m_i) + c) |v_i| over the grains at that time (a grain moving at
+    v on a spring k vibrates with force amplitude v sqrt(k m); the drag
+    adds c v), from the grains' velocities written at the same time.
+    Definitions, to round-off (1e-12): stress = force / box area, the lid
+    of wallStress is the lid of packingStatistics, density = M / (A lid),
+    solid fraction = V / (A lid), strain rate = -v_lid / lid (base at 0),
+    bulk viscosity = lid stress / strain rate; coordination number = the
+    grains' contacts (contactCount of the grains' .vtp) / grains; no
+    bonds."""
+    c = settled_column("packing_at_rest")
+    walls = read_columns(c.file("postProcessing/wallStress/0/wallStress.dat"))
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    assert list(walls) == WALL_COLUMNS and list(packing) == PACKING_COLUMNS
+
+    mass, volume = grain_masses(c)
+    weight = mass.sum() * G
+    t, vtp = grain_files(c.path)[-1]
+    grains = read_vtp(vtp)
+    speed = np.linalg.norm(grains["velocity"], axis=1)
+    bound = np.sum((np.sqrt(STIFFNESS * mass) + DRAG) * speed)
+    row = np.flatnonzero(np.isclose(walls["time"], t, rtol=0, atol=1e-9))[-1]
+    lid_error = walls["top_force"][row] - SIGMA0 * AREA
+    base_error = walls["bottom_force"][row] + SIGMA0 * AREA + weight
+    print(f"t = {t} s: lid force {walls['top_force'][row]:.9g} N (sigma0 A = {SIGMA0 * AREA} N),"
+          f" base force {walls['bottom_force'][row]:.9g} N (-(sigma0 A + M g) ="
+          f" {-(SIGMA0 * AREA + weight):.9g} N); errors {lid_error:.2e}, {base_error:.2e} N;"
+          f" bound from the grains' motion {bound:.2e} N; density {packing['density'][row]:.6g}")
+    assert abs(lid_error) < bound and abs(base_error) < bound
+    assert bound < 1e-3 * weight      # at rest: the bound itself is small
+
+    for wall in ("bottom", "top"):
+        np.testing.assert_allclose(walls[f"{wall}_stress"], walls[f"{wall}_force"] / AREA,
+                                   rtol=1e-12, atol=0)
+    lid = walls["top_position"]
+    np.testing.assert_array_equal(packing["lidPosition"], lid)
+    np.testing.assert_allclose(packing["density"], mass.sum() / (AREA * lid), rtol=1e-12)
+    np.testing.assert_allclose(packing["solidFraction"], volume.sum() / (AREA * lid), rtol=1e-12)
+    np.testing.assert_allclose(packing["strainRate"], -packing["lidVelocity"] / lid, rtol=1e-12)
+    moving = packing["strainRate"] != 0
+    np.testing.assert_allclose(packing["bulkViscosity"][moving],
+                               walls["top_stress"][moving] / packing["strainRate"][moving],
+                               rtol=1e-12)
+    assert packing["coordinationNumber"][row] == grains["contactCount"].sum() / len(mass)
+    for column in ("bondsIntact", "bondsFormed", "bondsBroken", "bondsApart",
+                   "meanPatchRadius"):
+        assert np.all(packing[column] == 0)
+
+
+def minimum_image(d, box):
+    """Differences d (n, 3) to their nearest periodic images in x and y."""
+    d = d.copy()
+    for k in (0, 1):
+        d[:, k] -= box[k] * np.round(d[:, k] / box[k])
+    return d
+
+
+def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
+    """Grains falling in the column freeze together where they touch
+    (formation frozenOnContact, bonds that never break). At every write
+    time the bonds' .vtp (read by VTK's own reader, listed in
+    bonds.vtp.series) holds one line per intact bond counted by
+    packingStatistics; its lines run from the first grain's centre to the
+    nearest image of the second's (round-off of the coordinates, 1e-12 of
+    the box); every patch radius is the one the formation drew from
+    areaFraction (r_b^2 / r_min^2 in [0.03125, 0.09375], round-off); the
+    counts conserve bonds (intact = formed - broken, no breakage: broken =
+    0); bondsApart is the number of bonds whose spheres do not touch and
+    the coordination number 2 (touching pairs + apart) / grains, with the
+    touching pairs from the grains' contactCount."""
+    c = Case("grainColumn", "bonded_column")
+    c.set("system/controlDict", "endTime", 0.4)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 100)
+    c.set("system/controlDict", "functions", FUNCTIONS)
+    c.set(DEM, "viscousDrag", DRAG)
+    # E: a bond of the mean patch (r_b^2 = r^2/16) about as stiff as the
+    # contacts (k_ne pi r_b^2 = E pi r / 32 ~ 9e5 N/m for r = 9 mm)
+    c.set(DEM, "bonds", "{ youngsModulus 1e9; normalDampingRatio 0.2; shearDampingRatio 0.2;"
+                        " strength { type none; } formation { type frozenOnContact;"
+                        " areaFraction (0.03125 0.09375); interval 10; seed 3; } }")
+    c.run("blockMesh")
+    c.run("demFoam")
+
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    np.testing.assert_array_equal(packing["bondsIntact"],
+                                  packing["bondsFormed"] - packing["bondsBroken"])
+    assert np.all(packing["bondsBroken"] == 0)
+    box = np.array([0.1, 0.1])
+
+    bond_files = grain_files(c.path, "bonds")
+    grain_times = dict(grain_files(c.path))
+    assert [t for t, _ in bond_files] == sorted(grain_times)
+    for t, path in bond_files:
+        bonds = read_vtp_lines(path)
+        grains = read_vtp(grain_times[t])
+        row = np.flatnonzero(np.isclose(packing["time"], t, rtol=0, atol=1e-9))[-1]
+        n = len(bonds["lines"])
+        assert n == packing["bondsIntact"][row]
+        if n == 0:
+            continue
+        a, b = bonds["first"], bonds["second"]
+        ends = bonds["points"][bonds["lines"]]
+        x = grains["position"]
+        np.testing.assert_allclose(ends[:, 0], x[a], rtol=0, atol=1e-12 * box[0])
+        np.testing.assert_allclose(ends[:, 1] - ends[:, 0], minimum_image(x[b] - x[a], box),
+                                   rtol=0, atol=1e-12 * box[0])
+        r = grains["radius"]
+        fraction = bonds["patchRadius"]**2 / np.minimum(r[a], r[b])**2
+        assert fraction.min() >= 0.03125 * (1 - 1e-12)
+        assert fraction.max() <= 0.09375 * (1 + 1e-12)
+        np.testing.assert_allclose(packing["meanPatchRadius"][row],
+                                   bonds["patchRadius"].mean(), rtol=1e-12)
+        apart = np.sum(np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1) > r[a] + r[b])
+        assert packing["bondsApart"][row] == apart
+        touching = grains["contactCount"].sum() / 2
+        assert packing["coordinationNumber"][row] == 2 * (touching + apart) / len(r)
+        print(f"t = {t} s: {n} bonds, {apart} apart, r_b^2/r_min^2 in "
+              f"[{fraction.min():.5f}, {fraction.max():.5f}], coordination number "
+              f"{packing['coordinationNumber'][row]:.3f}")
+    assert packing["bondsIntact"][-1] > 0
