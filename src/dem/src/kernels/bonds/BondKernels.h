@@ -8,6 +8,7 @@
 
 #include "kernels/CapsuleGeometry.h"
 #include "kernels/Views.h"
+#include "kernels/bonds/BondGeometry.h"
 #include "kernels/bonds/BondLaw.h"
 
 #include <cstdint>
@@ -90,32 +91,6 @@ struct BondView
         x[kBondSoftening * s] = st.softening ? 1.0 : 0.0;
     }
 };
-
-//- Where a bond sits: the cores' closest points (valid whether the grains touch or not; a
-//- sphere's core is its centre). d = x_B - x_A (minimum image), aA, aB the half-axis vectors.
-//- delta = R_A + R_B - distance (overlap > 0, gap < 0); the contact point is the middle of the
-//- overlap or gap, c = (x_A + u_A a_A) + (R_A - delta/2) n. Cores that intersect have no
-//- direction: +z, as the contact geometry does.
-DEM_HD BondGeometry bondGeometry(const Vector3d& d, const Vector3d& aA, const Vector3d& aB,
-                                 double radiusA, double radiusB, double& delta)
-{
-    double uA, uB;
-    closestSegmentParameters(aA, aB, d, uA, uB);
-    const Vector3d separation = d - (uA * aA - uB * aB);
-    const double sumRadii = radiusA + radiusB;
-    const double distance2 = separation.squaredNorm();
-    const bool coincident = distance2 < kCoincidentFraction2 * sumRadii * sumRadii;
-    const double distance =
-        std::sqrt(coincident ? kCoincidentFraction2 * sumRadii * sumRadii : distance2);
-    BondGeometry g;
-    g.normal = coincident ? Vector3d(0.0, 0.0, 1.0) : Vector3d(separation / distance);
-    delta = sumRadii - distance;
-    g.offsetA = uA * aA + (radiusA - 0.5 * delta) * g.normal;
-    g.offsetB = g.offsetA - d;
-    g.radiusA = radiusA;
-    g.radiusB = radiusB;
-    return g;
-}
 
 //- Per bond: its geometry and motion at the packed state, one step of BondLaw::advance (the
 //- state is updated in place) and the load record. Returns 1 for a bond that broke this step
