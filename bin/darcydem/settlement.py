@@ -59,14 +59,15 @@ SIZES = {
     "quick": dict(count=1000, box=PAPER_BOX, settleTime=0.5, viscosities=PAPER_VISCOSITIES,
                   strainRate=-1.0, seed=1),
     # For the tests: 250 grains in a box a quarter of the paper's (half in x and z).
-    "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.25,
-                 viscosities=(1.6e3, 1.6e4), strainRate=-2.0, seed=2),
+    "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.3,
+                 viscosities=(1.6e5, 1.0e6), strainRate=-2.0, seed=2),
 }
 
 # Preparation: grains R in [0.4, 0.6] mm, aspect (length / width) in [1.5, 3]
 RADIUS = (4e-4, 6e-4)
 ASPECT = (2.0, 4.0)
 CONTRACTION = 1.5      # the loose box is this much wider (x) and taller (z)
+SWEEP = 0.9            # the grains' contraction rate over the walls'
 # strainRate (SIZES): -1 1/s closes neighbours at about 2 mm/s, whose kinetic energy is
 # about 1/30 of what a bond stores at its tensile strength: bonds survive their freezing
 RELAX_TIME = 0.05       # [s] with the drag below
@@ -183,27 +184,29 @@ class SettlementStudy:
         return c.mesh(state_from)
 
     def final_walls(self):
-        """x walls of the paper's box in the middle of the loose box, bottom at 0."""
-        lx = self.s["box"][0]
+        """(left, right, bottom, lid) of the paper's box in the middle of the loose box."""
+        lx, _, lz = self.s["box"]
         x0 = 0.5 * (self.loose[0] - lx)
-        return x0, x0 + lx, self.s["box"][2]
+        z0 = 0.5 * (self.loose[2] - lz)
+        return x0, x0 + lx, z0, z0 + lz
 
     def set_walls(self, c, moving):
         dem = "constant/demProperties"
-        left, right, lid = self.final_walls()
         if moving:
-            # the walls ride on the strain-rate field about (Lx/2, ., 0) and reach the
-            # paper's box when (1 + rate t) = 1 / CONTRACTION
+            # the walls close on the middle of the loose box at the wall strain rate and
+            # reach the paper's box when (1 + rate t) = 1 / CONTRACTION; the grains' field
+            # is SWEEP x slower, so the walls catch the outermost grains and press them onto
+            # the skeleton: it ends touching every wall
             lx, _, lz = self.loose
-            for wall, position, velocity in (("left", 0.0, self.s['strainRate'] * (0 - lx / 2)),
-                                             ("right", lx, self.s['strainRate'] * lx / 2),
-                                             ("lid", lz, self.s['strainRate'] * lz)):
+            rate = self.s["strainRate"]
+            for wall, position, middle in (("left", 0.0, lx / 2), ("right", lx, lx / 2),
+                                           ("bottom", 0.0, lz / 2), ("lid", lz, lz / 2)):
                 c.set(dem, f"walls/{wall}/mode", "velocity")
                 c.set(dem, f"walls/{wall}/position", "%.12g" % position)
-                c.set(dem, f"walls/{wall}/velocity", "%.12g" % velocity)
+                c.set(dem, f"walls/{wall}/velocity", "%.12g" % (rate * (position - middle)))
             c.remove(dem, "walls/lid/mass")
         else:
-            for wall, position in (("left", left), ("right", right), ("lid", lid)):
+            for wall, position in zip(("left", "right", "bottom", "lid"), self.final_walls()):
                 c.set(dem, f"walls/{wall}/position", "%.12g" % position)
 
     def controls(self, c, end, writes, rows=2000):
@@ -226,13 +229,14 @@ class SettlementStudy:
         dem = "constant/demProperties"
         lx, ly, lz = self.loose
         a = self.stage("contract")
+        grain_rate = SWEEP * s["strainRate"]
         subprocess.run([os.path.join(BIN, "makeGrains"), "--box", "%.12g" % lx, "%.12g" % ly,
                         "--z", "0", "%.12g" % lz, "--radius", str(RADIUS[0]), str(RADIUS[1]),
                         "--layout", "random", "--count", str(s["count"]),
                         "--capsule-fraction", "1", "--aspect", str(ASPECT[0]), str(ASPECT[1]),
                         "--periodic", "y", "--gap", "0.05",
-                        "--strain-rate", str(self.s['strainRate']), "0", str(self.s['strainRate']),
-                        "--strain-origin", "%.12g" % (lx / 2), "0", "0",
+                        "--strain-rate", str(grain_rate), "0", str(grain_rate),
+                        "--strain-origin", "%.12g" % (lx / 2), "0", "%.12g" % (lz / 2),
                         "--seed", str(s["seed"]), "-o", a.file("0/grains")],
                        check=True, stdout=subprocess.DEVNULL)
         self.set_walls(a, moving=True)
