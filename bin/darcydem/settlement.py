@@ -52,14 +52,14 @@ TIME_STEP = 1e-5                         # the paper's DEM step [s]
 STEPS_PER_FLUID_STEP = 20
 
 SIZES = {
-    # The paper: 1000 grains in its box, 2 s of settlement per contact viscosity.
-    "paper": dict(count=1000, box=PAPER_BOX, settleTime=2.0, viscosities=PAPER_VISCOSITIES,
+    # The paper: 1000 grains in its box, 3 s of settlement per contact viscosity.
+    "paper": dict(count=1000, box=PAPER_BOX, settleTime=3.0, viscosities=PAPER_VISCOSITIES,
                   strainRate=-1.0, seed=1),
-    # The same sample, a quarter of the settlement time.
-    "quick": dict(count=1000, box=PAPER_BOX, settleTime=0.5, viscosities=PAPER_VISCOSITIES,
+    # The same sample, a third of the settlement time.
+    "quick": dict(count=1000, box=PAPER_BOX, settleTime=1.0, viscosities=PAPER_VISCOSITIES,
                   strainRate=-1.0, seed=1),
     # For the tests: 250 grains in a box a quarter of the paper's (half in x and z).
-    "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.3,
+    "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.5,
                  viscosities=(1.6e5, 1.0e6), strainRate=-2.0, seed=2),
 }
 
