@@ -3,14 +3,15 @@
 Figs 5-10, run through real case directories:
 
   1. contract  demFoam, no gravity: a loose random gas of capsules
-               (makeGrains --layout random --periodic y) in a box wider (x)
-               and taller (z) than the paper's, every grain moving with the
-               homogeneous contracting strain-rate field (--strain-rate) and
-               the x walls and the lid keeping pace with it, until the walls
-               reach the paper's box (0.019 x 0.016 x 0.019 m): Cundall and
-               Strack's contraction of space. Every pair that touches freezes
-               at once (bonds formation frozenOnContact), so the grains end as
-               a bonded, loose skeleton at the start density;
+               (makeGrains --layout random --periodic y) in a box 1.5 x wider
+               (x) and taller (z) than the paper's, every grain moving with a
+               homogeneous contracting strain-rate field (--strain-rate) about
+               the box middle, the four walls closing on it 1/0.9 x faster
+               until they make the paper's box (0.019 x 0.016 x 0.019 m):
+               Cundall and Strack's contraction of space, the walls sweeping
+               the outermost grains onto the rest. Every pair that touches
+               freezes at once (bonds formation frozenOnContact), so the grains
+               end as a bonded, loose skeleton touching every wall;
   2. relax     the walls stopped, a global viscous drag takes out the
                contraction's remaining momentum; its demState is the sample
                every settlement run starts from (identical for all);
