@@ -1,7 +1,7 @@
 """A short snow settlement run (tutorials/demFoam/snowSettlement through
 settlementStudy, size 'test': 250 capsules in a box half the paper's in x
-and y, contracted with bonds freezing on contact, then two contact
-viscosities settling under the free lid for 0.25 s). Checks the lid's
+and z, contracted with bonds freezing on contact, then contact viscosities
+0.16 and 1 MPa s settling under the free lid for 0.5 s). Checks the lid's
 momentum balance, the conservation of grain mass in the density, the bond
 bookkeeping and that settlement slows with the contact viscosity."""
 
@@ -31,17 +31,17 @@ def study():
 
 def test_lid_stress_is_the_lid_weight(study):
     """Momentum of the lid (mass m, free along z): m dv/dt = F - m g, so over
-    the loaded rows the mean grain force on the lid is m g + m dv/dt. The
-    lid's velocity change over that time is measured, and the mean of the
-    sampled stress carries a sampling error (its standard error from 10
-    block means): the tolerance is 4 standard errors plus the measured
-    inertial term."""
+    an interval the mean grain force on the lid is m g + m (v1 - v0)/(t1 - t0).
+    Over the last 0.1 s (the lid has caught up with the sample 0.4 s in), the
+    mean lid stress P_zz is its weight over the area within the measured
+    inertial term plus 4 standard errors of the mean of the sampled stress
+    (from 10 block means: the force is sampled every 100 DEM steps)."""
     s, runs = study
     box = s.s["box"]
     area = box[0] * box[1]
     weight = S.LID_MASS * S.GRAVITY / area
     for r in runs:
-        m = r.t >= S.GRAVITY_RAMP + 0.05   # after the ramp and the elastic response to it
+        m = r.t >= r.t[-1] - 0.1
         t, pzz, v = r.t[m], r.pzz[m], r.p["lidVelocity"][m]
         inertial = S.LID_MASS * abs(v[-1] - v[0]) / (t[-1] - t[0]) / area
         blocks = [b.mean() for b in np.array_split(pzz, 10)]
@@ -90,17 +90,22 @@ def test_bond_bookkeeping(study):
 
 def test_settlement_slows_with_contact_viscosity(study):
     """The paper's first finding: the settlement rate falls as the contact
-    viscosity rises. Over the loaded rows, the lid of the 10 x more
-    viscous run sinks less, and the density of each run does not fall
-    (creep under a constant load only compacts: the lid's position sampled
-    every 0.025 s never rises by more than the elastic ringing, bounded by
-    the largest rise between consecutive rows of the stiffer run's start)."""
+    viscosity rises. Both runs start from the same sample; their lids first
+    fall onto it under the gravity ramp alike (inertia, not creep, sets the
+    first 0.3 s), then the viscous skeleton takes the weight. Over the last
+    0.1 s the lid of the 6.25 x more viscous run sinks more slowly (the
+    ratio of the mean strain rates is printed: linear creep would give 6.25
+    in steady creep, which 0.5 s does not reach at 1 MPa s, tau_bend 0.11 s),
+    and both samples are denser than they started."""
     s, runs = study
-    low, high = runs[0], runs[1]
-    settled = []
+    rates = []
     for r in runs:
-        m = r.loaded()
-        settled.append(r.density[m][-1] - r.density[m][0])
-    print(f"density gained after the ramp: nu_s {low.nu:g}: {settled[0]:.3f} kg/m^3,"
-          f" nu_s {high.nu:g}: {settled[1]:.3f} kg/m^3, ratio {settled[0] / settled[1]:.2f}")
-    assert settled[0] > settled[1] > 0
+        m = r.t >= r.t[-1] - 0.1
+        lid, bottom = r.p["lidPosition"][m], r.w["bottom_position"][m]
+        rates.append((lid[0] - lid[-1]) / (r.t[m][-1] - r.t[m][0]) / np.mean(lid - bottom))
+        print(f"nu_s {r.nu:g}: strain rate over the last 0.1 s {rates[-1]:.4g} 1/s; density"
+              f" {r.density[0]:.2f} -> {r.density[-1]:.2f} kg/m^3")
+        assert r.density[-1] > r.density[0]
+    print(f"strain rate ratio {rates[0] / rates[1]:.2f} for a viscosity ratio"
+          f" {runs[1].nu / runs[0].nu:.2f}")
+    assert rates[0] > rates[1]
