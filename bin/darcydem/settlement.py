@@ -115,8 +115,9 @@ def label(nu):
 class Run:
     """The measurements of one settlement run (the two .dat files)."""
 
-    def __init__(self, case_dir, nu):
+    def __init__(self, case_dir, nu, ly):
         self.nu = nu
+        self.ly = ly    # the periodic length in y [m]
         w = read_columns(os.path.join(case_dir, WALL_STRESS))
         p = read_columns(os.path.join(case_dir, PACKING))
         n = min(len(w["time"]), len(p["time"]))
@@ -153,6 +154,20 @@ class Run:
     def loaded(self):
         """Rows after the gravity ramp."""
         return self.t >= GRAVITY_RAMP
+
+    def creeping(self):
+        """Rows from the first time the smoothed lid stress reaches the lid's
+        weight over the area on: the lid has caught up with the sample and
+        sinks as the skeleton creeps (before, it falls onto the sample and
+        P_zz / strain rate is no viscosity)."""
+        area = (self.w["right_position"][0] - self.w["left_position"][0]) * self.ly
+        weight = LID_MASS * GRAVITY / area
+        smooth = hanning_smooth(self.pzz, max(5, len(self.t) // 40))
+        reached = np.flatnonzero(self.loaded() & (smooth >= weight))
+        mask = np.zeros(len(self.t), dtype=bool)
+        if len(reached):
+            mask[reached[0]:] = True
+        return mask
 
 
 class SettlementStudy:
@@ -286,7 +301,7 @@ class SettlementStudy:
                  f" ({self.s['settleTime']} s)")
         seconds = self.timed_run(c, name)
         steps = round(self.s["settleTime"] / TIME_STEP)
-        run = Run(c.path, nu)
+        run = Run(c.path, nu, self.s["box"][1])
         rate, viscosity = run.creep_rates()
         loaded = run.loaded()
         self.results["runs"][name] = {
@@ -318,7 +333,7 @@ class SettlementStudy:
         for nu in self.s["viscosities"]:
             path = os.path.join(self.stages, "settle_nu%g" % nu)
             if os.path.exists(os.path.join(path, PACKING)):
-                runs.append(Run(path, nu))
+                runs.append(Run(path, nu, self.s["box"][1]))
         return runs
 
     def write_results(self):
@@ -331,19 +346,24 @@ class SettlementStudy:
 
 
 def reference_density(runs, wanted=300.0):
-    """The density every run passes through after loading: `wanted` (the
-    paper's Fig. 10 uses 300 kg/m^3) when all reach it, else the highest
-    density all reach."""
-    reached = min(np.max(r.density[r.loaded()]) for r in runs)
-    start = max(np.min(r.density[r.loaded()]) for r in runs)
+    """A density every run passes through while creeping: `wanted` (the
+    paper's Fig. 10 uses 300 kg/m^3) when all reach it, else the middle of
+    the range all share (None when they share none)."""
+    spans = [r.density[r.creeping()] for r in runs]
+    if any(len(d) == 0 for d in spans):
+        return None
+    reached = min(np.max(d) for d in spans)
+    start = max(np.min(d) for d in spans)
+    if start > reached:
+        return None
     return wanted if start <= wanted <= reached else 0.5 * (start + reached)
 
 
 def viscosity_at(run, density):
-    """Bulk viscosity of a run at a density: the median over the loaded rows
-    within 1 % of it (the smoothed viscosity still scatters)."""
+    """Bulk viscosity of a run at a density: the median over the creeping
+    rows within 0.5 % of it (the smoothed viscosity still scatters)."""
     _, viscosity = run.creep_rates()
-    rows = run.loaded() & (np.abs(run.density - density) <= 0.01 * density)
+    rows = run.creeping() & (np.abs(run.density - density) <= 0.005 * density)
     values = viscosity[rows]
     values = values[np.isfinite(values)]
     return float(np.median(values)) if len(values) else float("nan")
@@ -407,7 +427,7 @@ def plot_figures(runs, out_dir, box, results=None):
         a.set_xlabel("density [kg/m³]")
     save(fig, "settlementDensity.png")
 
-    # Fig. 8 (d): bulk axial strain rate against density
+    # Fig. 8 (d): bulk axial strain rate against density (the whole loaded run)
     fig, ax = plt.subplots(figsize=(6.5, 4))
     for k, r in enumerate(runs):
         rate, _ = r.creep_rates()
@@ -419,11 +439,11 @@ def plot_figures(runs, out_dir, box, results=None):
     ax.legend(fontsize=7)
     save(fig, "settlementCreep.png")
 
-    # Fig. 9: bulk viscosity against density
+    # Fig. 9: bulk viscosity against density, once the lid rests on the creeping sample
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for k, r in enumerate(runs):
         _, viscosity = r.creep_rates()
-        m = r.loaded()
+        m = r.creeping()
         ax.semilogy(r.density[m], viscosity[m], color=colours[k % len(colours)],
                     label=label(r.nu))
     ax.set_xlabel("density [kg/m³]")
@@ -432,8 +452,8 @@ def plot_figures(runs, out_dir, box, results=None):
     save(fig, "settlementViscosity.png")
 
     # Fig. 10: bulk viscosity at one density against contact viscosity
-    if len(runs) >= 2:
-        rho = reference_density(runs)
+    rho = reference_density(runs) if len(runs) >= 2 else None
+    if rho is not None:
         nu = np.array([r.nu for r in runs])
         eta = np.array([viscosity_at(r, rho) for r in runs])
         ok = np.isfinite(eta) & (eta > 0)
