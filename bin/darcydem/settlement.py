@@ -71,7 +71,9 @@ CONTRACTION = 1.5      # the loose box is this much wider (x) and taller (z)
 SWEEP = 0.9            # the grains' contraction rate over the walls'
 # strainRate (SIZES): -1 1/s closes neighbours at about 2 mm/s, whose kinetic energy is
 # about 1/30 of what a bond stores at its tensile strength: bonds survive their freezing
-RELAX_TIME = 0.05       # [s] with the drag below
+RELAX_TIME = 0.1        # [s] with the drag below
+RELAX_LID_MASS = 1e-3   # [kg]: the lid closes a gap of 0.1 mm in about 0.02 s
+RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
 RELAX_DRAG = 3e-4       # [N s/m]: m/c about 5 ms for a grain of 1.6e-6 kg
 PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
 
@@ -265,8 +267,13 @@ class SettlementStudy:
 
         b = self.stage("relax", state_from=self.last_state(a))
         self.set_walls(b, moving=False)
-        b.set(dem, "walls/lid/mode", "fixed")
-        b.remove(dem, "walls/lid/mass")
+        # the skeleton springs back from the lid when the walls stop: a light lid
+        # pressing at a quarter of the real lid's stress closes that gap (the free lid
+        # of the settlement would fall through it)
+        lid_stress = LID_MASS * GRAVITY / (s["box"][0] * s["box"][1])
+        b.set(dem, "walls/lid/mode", "stress")
+        b.set(dem, "walls/lid/mass", RELAX_LID_MASS)
+        b.set(dem, "walls/lid/normalStress", "%.12g" % (RELAX_LID_STRESS * lid_stress))
         b.set(dem, "gravity", "(0 0 0)")
         b.set(dem, "viscousDrag", RELAX_DRAG)
         b.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
