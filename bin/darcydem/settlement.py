@@ -298,17 +298,23 @@ class SettlementStudy:
         self.log(f"settlementStudy: {name} took {seconds:.0f} s")
         return seconds
 
-    def settle(self, nu):
-        name = "settle_nu%g" % nu
+    def settle(self, nu, creep_off=None):
+        """One settlement run; creep_off: the creep mechanism (shear, twist,
+        bend) switched off in it."""
+        name = "settle_nu%g" % nu + ("" if creep_off is None else "_no" + creep_off.title())
         c = self.stage(name, state_from=self.prepared)
         self.set_walls(c, moving=False)
         c.set("constant/demProperties", "bonds/creep/contactViscosity", "%g" % nu)
+        if creep_off is not None:
+            c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
         self.controls(c, self.s["settleTime"], 4)
         self.log(f"settlementStudy: settle, contact viscosity {label(nu)}"
-                 f" ({self.s['settleTime']} s)")
+                 f" ({self.s['settleTime']} s)"
+                 + ("" if creep_off is None else f", {creep_off} creep off"))
         seconds = self.timed_run(c, name)
         steps = round(self.s["settleTime"] / TIME_STEP)
         run = Run(c.path, nu, self.s["box"][1])
+        run.creep_off = creep_off
         rate, viscosity = run.creep_rates()
         loaded = run.loaded()
         self.results["runs"][name] = {
@@ -325,12 +331,23 @@ class SettlementStudy:
         }
         return run
 
-    def run(self):
-        self.prepare()
+    def run(self, creep_off=(), keep_sample=False):
+        """The preparation (unless keep_sample and stages/relax has run), the
+        settlement runs, and one more run at the lowest contact viscosity for
+        each mechanism in creep_off, with that creep mechanism off."""
+        relax = os.path.join(self.stages, "relax")
+        if keep_sample and os.path.exists(relax) and Case.existing(relax).times():
+            self.prepared = self.last_state(Case.existing(relax))
+            self.log(f"settlementStudy: the sample of {relax}")
+        else:
+            self.prepare()
         runs = [self.settle(nu) for nu in self.s["viscosities"]]
+        variants = [self.settle(min(self.s["viscosities"]), m) for m in creep_off]
         self.results["lidStressExpected"] = LID_MASS * GRAVITY / (
             self.s["box"][0] * self.s["box"][1])
         self.plot(runs)
+        if variants:
+            plot_creep_off(runs[int(np.argmin([r.nu for r in runs]))], variants, self.dir)
         self.write_results()
         return runs
 
@@ -478,6 +495,30 @@ def plot_figures(runs, out_dir, box, results=None):
         save(fig, "settlementScaling.png")
 
 
+def plot_creep_off(reference, variants, out_dir):
+    """settlementCreepOff.png: lid stress, density and broken bonds against
+    time with every creep mechanism on and with one off."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(3, 1, figsize=(6.5, 8), sharex=True)
+    for r in [reference] + list(variants):
+        name = "all creep on" if getattr(r, "creep_off", None) is None else (
+            f"{r.creep_off} creep off")
+        ax[0].plot(r.t, r.pzz, lw=0.8, label=f"{name}, {label(r.nu)}")
+        ax[1].plot(r.t, r.density)
+        ax[2].plot(r.t, r.broken)
+    ax[0].set_ylabel("P_zz [Pa]")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("density [kg/m³]")
+    ax[2].set_ylabel("broken bonds")
+    ax[2].set_xlabel("time [s]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "settlementCreepOff.png"), dpi=110)
+    plt.close(fig)
+
+
 def main(argv):
     ap = argparse.ArgumentParser(prog="settlementStudy", description=__doc__.split("\n")[0])
     ap.add_argument("study_dir")
@@ -485,6 +526,12 @@ def main(argv):
     ap.add_argument("--paper", action="store_true", help="the same as --size paper")
     ap.add_argument("--plot-only", action="store_true",
                     help="redraw the figures from the runs already in stages/")
+    ap.add_argument("--creep-off", action="append", default=[],
+                    choices=("shear", "twist", "bend"),
+                    help="one more run at the lowest contact viscosity with this creep"
+                         " mechanism off (may be repeated)")
+    ap.add_argument("--keep-sample", action="store_true",
+                    help="start from the sample already in stages/relax")
     a = ap.parse_args(argv)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             log=lambda m: print(m, flush=True))
@@ -492,4 +539,4 @@ def main(argv):
         study.plot(study.existing_runs())
         study.write_results()
         return
-    study.run()
+    study.run(creep_off=a.creep_off, keep_sample=a.keep_sample)
