@@ -475,19 +475,31 @@ def plot_figures(runs, out_dir, box, results=None):
     ax.legend(fontsize=7)
     save(fig, "settlementViscosity.png")
 
-    # Fig. 10: bulk viscosity at one density against contact viscosity
-    rho = reference_density(runs) if len(runs) >= 2 else None
-    if rho is not None:
+    # Fig. 10: bulk viscosity at one density against contact viscosity. Where the runs
+    # share no density while creeping (the fast ones have compacted before their lid
+    # rests on them), each run's viscosity where it starts creeping, densities noted.
+    if len(runs) >= 2:
+        rho = reference_density(runs)
         nu = np.array([r.nu for r in runs])
-        eta = np.array([viscosity_at(r, rho) for r in runs])
+        if rho is not None:
+            at = np.full(len(runs), rho)
+        else:
+            at = np.array([r.density[r.creeping()][0] if r.creeping().any() else np.nan
+                           for r in runs])
+        eta = np.array([viscosity_at(r, d) if np.isfinite(d) else np.nan
+                        for r, d in zip(runs, at)])
         ok = np.isfinite(eta) & (eta > 0)
         fig, ax = plt.subplots(figsize=(5.5, 4.5))
-        ax.loglog(nu[ok], eta[ok], "o", label=f"at {rho:.0f} kg/m³")
+        ax.loglog(nu[ok], eta[ok], "o", label=(f"at {rho:.0f} kg/m³" if rho is not None else
+                                                "where each run starts creeping"))
+        for n, e, d in zip(nu[ok], eta[ok], at[ok]):
+            ax.annotate(f"{d:.0f} kg/m³", (n, e), fontsize=7, xytext=(4, -10),
+                        textcoords="offset points")
         if np.count_nonzero(ok) >= 2:
             slope, intercept = np.polyfit(np.log10(nu[ok]), np.log10(eta[ok]), 1)
             fit = 10 ** (intercept + slope * np.log10(nu[ok]))
             ax.loglog(nu[ok], fit, "k--", lw=0.8, label=f"fit: slope {slope:.2f}")
-            results["scaling"] = {"density": rho, "contactViscosity": nu.tolist(),
+            results["scaling"] = {"density": at.tolist(), "contactViscosity": nu.tolist(),
                                   "bulkViscosity": eta.tolist(), "logSlope": slope}
         ax.set_xlabel("contact viscosity ν_s [Pa s]")
         ax.set_ylabel("bulk viscosity [Pa s]")
