@@ -1,10 +1,11 @@
 // WallAxisTest.cpp
 // Walls on any axis, free walls and gravity changes: a grain resting on an x (y) wall under
-// gravity along x (y) loads it with its weight; a free lid falls freely, lands on a grain and
-// rests on it with its weight; a stress-controlled x wall takes sigma0 times the box's y length
-// times the gap between the z walls; under a linear gravity ramp a grain and a free wall follow
-// velocity Verlet's closed form; bad walls are refused with the valid choices; a state of the
-// 4-wall layout restarts.
+// gravity along x (y) loads it with its weight, and so does a capsule on both ends on the
+// sixth wall of a closed box; a free lid falls freely, lands on a grain and rests on it with
+// its weight; a stress-controlled x wall takes sigma0 times the box's y length times the gap
+// between the z walls; under a linear gravity ramp a grain and a free wall follow velocity
+// Verlet's closed form; the deposit mirrors at closed x sides; bad walls are refused with the
+// valid choices; a state of the 4-wall layout restarts.
 #include "TestSupport.h"
 
 #include <cstdio>
@@ -77,6 +78,42 @@ TEST_P(WallAxes, GrainRestsOnSideWallUnderSideGravity)
         EXPECT_NEAR(measuredOverlap / overlap, 1.0, 1e-6);
         EXPECT_EQ(s.wall(0).spec.axis, axis);
     }
+}
+
+// A capsule lying along x on the sixth wall of a closed box (a lower y wall, gravity -y)
+// rests on both core ends: the wall carries m g, each end m g / 2 at overlap m g / (2 k);
+// its end contacts use the highest wall-contact bits (kMaxWalls = 6).
+TEST_P(WallAxes, CapsuleRestsOnBothEndsOnTheSixthWall)
+{
+    const double r = 0.01, h = 0.015, g = 9.81;
+    dem::Parameters p = dampedParameters(0);
+    p.periodic = {false, false};
+    p.gravity = {0, -g, 0};
+    dem::System s(p);
+    dem::GrainInit capsule;
+    capsule.radius = r;
+    capsule.coreHalfLength = h;
+    capsule.orientation = {std::sqrt(0.5), 0.0, std::sqrt(0.5), 0.0}; // body z along x
+    capsule.position = {0.5, r, 0.5};
+    s.addGrains({capsule});
+    s.addWall(wallOn(2, dem::WallSpec::Side::lower, 0.0));
+    s.addWall(wallOn(2, dem::WallSpec::Side::upper, 1.0));
+    s.addWall(wallOn(0, dem::WallSpec::Side::lower, 0.0));
+    s.addWall(wallOn(0, dem::WallSpec::Side::upper, 1.0));
+    s.addWall(wallOn(1, dem::WallSpec::Side::upper, 1.0));
+    const int floor = s.addWall(wallOn(1, dem::WallSpec::Side::lower, 0.0));
+    s.step(int(0.05 / p.timeStep));
+    const dem::GrainData gd = s.grains();
+    const double m = gd.mass[0], k = p.grainWall.normalStiffness;
+    const double overlap = m * g / (2 * k);
+    std::printf("  capsule on wall %d: wall force / (m g) - 1 = %.2e, height error / overlap = "
+                "%.2e\n",
+                floor, s.wall(floor).grainForce / (-m * g) - 1,
+                (gd.position[1] - (r - overlap)) / overlap);
+    EXPECT_EQ(floor, 5);
+    EXPECT_NEAR(s.wall(floor).grainForce / (-m * g), 1.0, 1e-9); // at rest, as above
+    EXPECT_NEAR((gd.position[1] - (r - overlap)) / overlap, 0.0, 1e-6);
+    EXPECT_NEAR(gd.position[0], 0.5, 1e-9); // symmetric: no drift along the wall
 }
 
 // A free lid of mass M released above a grain on the floor falls freely (velocity Verlet is
@@ -230,6 +267,61 @@ TEST_P(WallAxes, BadWallsAreRefusedWithTheValidChoices)
     for (int i = 1; i < 6; ++i)
         s.addWall(w);
     EXPECT_NE(message(w).find("at most 6 walls"), std::string::npos) << message(w);
+}
+
+// A box closed in x (walls there, not periodic): the deposit mirrors at the x sides, so a
+// grain in the first half cell deposits all of its volume into the first column (a periodic
+// wrap would put a share into the last one), and grains along both x sides, spheres and
+// capsules, deposit their whole volume (round-off).
+TEST_P(WallAxes, DepositInBoxClosedInXMirrorsAtItsSides)
+{
+    const double box = 0.2, height = 0.15;
+    dem::Parameters p = parameters();
+    p.periodic = {false, true};
+    p.boxUpper = {box, box};
+    dem::UniformGrid grid;
+    grid.n = {5, 4, 6};
+    grid.spacing = {box / 5, box / 4, height / 6};
+    grid.periodic = {false, true, false};
+    const std::size_t cells = std::size_t(grid.n[0] * grid.n[1] * grid.n[2]);
+    {
+        dem::System s(p);
+        dem::GrainInit grain;
+        grain.radius = 0.006;
+        grain.position = {0.3 * grid.spacing[0], 1.5 * grid.spacing[1], 2.5 * grid.spacing[2]};
+        s.addGrains({grain});
+        std::vector<double> solid(cells), porosity(cells);
+        s.deposit(grid, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+        const std::size_t first = 0 + 5 * (1 + 4 * 2);
+        std::printf("  grain at 0.3 dx: first column holds %.17g of its volume\n",
+                    solid[first] / sphereVolume(grain.radius));
+        EXPECT_NEAR(solid[first] / sphereVolume(grain.radius), 1.0, 1e-14);
+    }
+    dem::System s(p);
+    std::vector<dem::GrainInit> grains;
+    for (int i = 0; i < 40; ++i)
+    {
+        dem::GrainInit g;
+        g.radius = 0.005;
+        const double x = g.radius + 0.0003 * i;
+        g.position = {i % 2 ? x : box - x, 0.005 * i, 0.01 + 0.003 * i};
+        if (i % 3 == 0)
+        {
+            g.coreHalfLength = 0.004; // along z: parallel to the x walls
+        }
+        grains.push_back(g);
+    }
+    s.addGrains(grains);
+    std::vector<double> solid(cells), porosity(cells);
+    s.deposit(grid, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+    double volume = 0, deposited = 0;
+    for (const dem::GrainInit& g : grains)
+        volume += sphereVolume(g.radius) + M_PI * g.radius * g.radius * 2 * g.coreHalfLength;
+    for (double v : solid)
+        deposited += v;
+    std::printf("  grains along both x sides: deposited / volume - 1 = %.2e\n",
+                deposited / volume - 1);
+    EXPECT_NEAR(deposited / volume, 1.0, 1e-13); // 40 grains' round-off
 }
 
 // A state written when grains held wall records for 4 walls (no 'walls.layout', 3 wall

@@ -190,8 +190,13 @@ void Foam::demCloud::evolve(const scalar dtFluid)
         [&]
         {
             // Wall stresses and gravity held for the fluid step, at its
-            // middle
-            walls_.update(*system_, mesh_.time().value() - 0.5*dtFluid);
+            // middle. The end time as its name reads: the value a restart
+            // starts from, where the running sum of time steps differs in
+            // the last bits, so time-dependent loads restart bit-identically
+            const Time& runTime = mesh_.time();
+            scalar t = runTime.value();
+            readScalar(runTime.timeName(), t);
+            walls_.update(*system_, t - 0.5*dtFluid);
             system_->step(nSub);
         }
     );
