@@ -2,14 +2,18 @@
 // The standard DEM benchmark of src/dem/bench/README.md: a settled dense packing on a wall,
 // 1000 relaxation steps with a global drag of 612 N s/m, then exactly 2000 timed steps without
 // damping. --shape capsule --aspect A: the same with capsules made from the packing
-// (CapsulePacking.h). The last line is machine-readable:
+// (CapsulePacking.h). --bonds: the same with bonds (every touching pair frozen at the first
+// step, formation checks every 10 steps, elastic patch with Maxwell creep), the cost of bonds
+// against the same grains without. The last line is machine-readable:
 //   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>
-//   shape=<sphere|capsule> aspect=<number>
+//   shape=<sphere|capsule> aspect=<number> bonds=<intact bonds per grain>
 #include "CapsulePacking.h"
 #include "PackingFile.h"
 #include "dem/System.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
@@ -26,13 +30,15 @@ void usage()
     std::cerr << "usage: demBench --packing FILE [--relax-steps 1000] [--steps 2000] "
                  "[--threads T] [--backend auto|cpu|cuda] [--skin 1e-5] [--replicate NXxNY]\n"
                  "                [--shape sphere|capsule] [--aspect 3] [--seed 1] "
-                 "[--write-packing FILE]\n"
+                 "[--write-packing FILE] [--bonds]\n"
                  "--replicate 10x1: NX x NY copies of the periodic packing side by side, "
                  "box NX L x NY L\n"
                  "--shape capsule: the packing's grains as capsules of the same volume and "
                  "aspect ratio (L + 2r) / (2r), random orientations (--seed), relaxed with soft "
                  "contacts stiffened stage by stage (untimed); --write-packing saves it "
-                 "(x y z r h qw qx qy qz per capsule) for --packing\n";
+                 "(x y z r h qw qx qy qz per capsule) for --packing\n"
+                 "--bonds: bonds on (frozen on contact, checked every 10 steps; elastic patch "
+                 "at most as stiff as the contacts, Maxwell creep)\n";
 }
 
 //- "NXxNY" (e.g. 10x1) as two positive counts.
@@ -96,6 +102,7 @@ int main(int argc, char** argv)
     dem::Backend backend = dem::Backend::automatic;
     std::pair<int, int> copies{1, 1};
     std::string shape = "sphere", writeFile;
+    bool bonds = false;
     dem::CapsulePackingSettings capsules;
     try
     {
@@ -134,6 +141,8 @@ int main(int argc, char** argv)
                 writeFile = value();
             else if (arg == "--seed")
                 capsules.seed = unsigned(std::stoul(value()));
+            else if (arg == "--bonds")
+                bonds = true;
             else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
                 friction = std::stod(value());
             else if (arg == "-h" || arg == "--help")
@@ -182,6 +191,21 @@ int main(int argc, char** argv)
             }
         double interior;
         const double bed = dem::bedSolidFraction(packing, interior);
+        if (bonds)
+        {
+            // The stiffest bond formation may make (r_b^2 = 0.09375 r^2, k_ne A = E pi 0.09375
+            // r / 2, the critical step's bound) as stiff as a contact: the benchmark's time step
+            // stays allowed.
+            double radius = 0.0;
+            for (const dem::GrainInit& g : packing.grains)
+                radius = std::max(radius, g.radius);
+            p.bonds.enabled = true;
+            p.bonds.formation = dem::BondFormation::frozenOnContact;
+            p.bonds.formationInterval = 10;
+            p.bonds.youngsModulus = 2.0 * p.grainGrain.normalStiffness / (M_PI * 0.09375 * radius);
+            p.bonds.creep = dem::BondCreep::maxwell;
+            p.bonds.contactViscosity = 1e6;
+        }
 
         dem::System system(p);
         system.addGrains(packing.grains);
@@ -211,6 +235,7 @@ int main(int argc, char** argv)
         const double cpuSeconds = processCpuSeconds() - cpuStart;
         const double rate = double(n) * steps / seconds;
         const double contactsPerGrain = 2.0 * double(system.contactCount()) / double(n);
+        const double bondsPerGrain = double(system.bondCounts().intact) / double(n);
         std::printf("relaxation %d steps, timed %d steps in %.4f s, %zu neighbour rebuild(s) "
                     "while timed, %.3f list pairs per grain\n",
                     relaxSteps, steps, seconds, system.neighbourRebuildCount() - rebuildsBefore,
@@ -219,9 +244,9 @@ int main(int argc, char** argv)
         std::printf("timed phase used %.4f s of CPU time (%.3g particle-steps per CPU-second)\n",
                     cpuSeconds, double(n) * steps / cpuSeconds);
         std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
-                    "contacts_per_grain=%.4f shape=%s aspect=%g\n",
+                    "contacts_per_grain=%.4f shape=%s aspect=%g bonds=%.4f\n",
                     rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain,
-                    shape.c_str(), aspect);
+                    shape.c_str(), aspect, bondsPerGrain);
         return 0;
     }
     catch (const std::exception& e)

@@ -228,12 +228,18 @@ void System::setTimeStep(double dt)
     impl_->engine->setTimeStep(dt);
 }
 
+//- k_max of the critical time step: the contact laws' and the bonds' (present and to come).
+static double largestStiffness(const Parameters& p, const detail::Engine& engine)
+{
+    return std::max(stiffest(p, engine.maximumRadius()), engine.maximumBondStiffness());
+}
+
 double System::criticalTimeStep() const
 {
     if (impl_->engine->grainCount() == 0)
         return 0.0;
     return std::sqrt(impl_->engine->minimumMass() /
-                     stiffest(impl_->parameters, impl_->engine->maximumRadius()));
+                     largestStiffness(impl_->parameters, *impl_->engine));
 }
 
 void System::step(int nSteps)
@@ -252,7 +258,7 @@ void System::step(int nSteps)
                 << ") x critical time step sqrt(m_min / k_max) = " << critical
                 << " s (m_min = " << impl_->engine->minimumMass()
                 << " kg, the smallest mass or capsule's I / lever^2; k_max = "
-                << stiffest(p, impl_->engine->maximumRadius()) << " N/m); reduce timeStep";
+                << largestStiffness(p, *impl_->engine) << " N/m); reduce timeStep";
             throw Error(msg.str());
         }
     }

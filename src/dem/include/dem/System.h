@@ -69,7 +69,8 @@ public:
     //- Advance nSteps DEM steps (velocity Verlet). Throws if dt > maxTimeStepFraction * dt_crit.
     void step(int nSteps);
     //- sqrt(m_min / k_max), k_max the largest normal or tangential stiffness in use (snow law:
-    //- k_n = E pi R_max / 2 of the largest radius, and its k_t), m_min the smallest mass, or
+    //- k_n = E pi R_max / 2 of the largest radius, and its k_t; bonds: the stiffest bond's
+    //- k_ne A, or E pi f_max R_max / 2 with formation), m_min the smallest mass, or
     //- for a capsule also I_min / (r + h)^2 (its rotation against the longest lever).
     double criticalTimeStep() const;
 

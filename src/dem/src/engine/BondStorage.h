@@ -1,11 +1,13 @@
 // BondStorage.h
 // RAII storage of the bonds (frozen ice contacts), separate from the neighbour list: a bond
 // lives here from addBonds or formation until it breaks, whatever the distance of its grains,
-// across neighbour rebuilds, re-sorting, periodic wrapping and restart. Bonds are kept sorted
-// by their grains' add-order indices (first, second), so their order, and every sum over them,
-// depends on neither the grain order nor the backend. Per bond: the two add-order indices, the
-// two internal indices (remapped after every re-sort), the state (BondState, component-blocked)
-// and the loads of the last force pass; per grain, the index of the bonds it belongs to.
+// across neighbour rebuilds, re-sorting, periodic wrapping and restart. Per bond: the two
+// add-order indices (first < second: A and B), the two internal indices, the state (BondState,
+// component-blocked) and the loads of the last force pass; per grain, the index of the bonds it
+// belongs to. After every re-sort of the grains the bonds are re-sorted by their internal
+// indices (A's, then B's): the force pass then walks the grains' records in memory order, and
+// the order is a function of the grain order alone (same on every backend and thread count,
+// restored by a restart).
 #pragma once
 
 #include "kernels/bonds/BondKernels.h"
@@ -91,20 +93,6 @@ public:
         loads_.resize(kBondLoadComponents * m);
     }
 
-    //- Sort by (first, second) (after appending).
-    template <class Policy>
-    void sort(const Policy& policy)
-    {
-        const int n = count();
-        keys_.resize(n);
-        thrust::transform(policy, first_.begin(), first_.end(), second_.begin(), keys_.begin(),
-                          BondKey());
-        order_.resize(n);
-        thrust::sequence(policy, order_.begin(), order_.end());
-        thrust::stable_sort_by_key(policy, keys_.begin(), keys_.end(), order_.begin());
-        select(policy, order_);
-    }
-
     //- Keep bonds order[0], order[1], ... in that order (re-sorting, removal).
     template <class Policy>
     void select(const Policy& policy, const Vec<int>& order)
@@ -136,14 +124,23 @@ public:
         select(policy, order_);
     }
 
-    //- Internal grain indices from the add-order ones (internalOf: per add-order index), and
-    //- the per-grain index of n grains: entries sorted by grain, each grain's by bond.
+    //- Internal grain indices from the add-order ones (internalOf: per add-order index), the
+    //- bonds sorted by them (A's, then B's), and the per-grain index of n grains: entries
+    //- sorted by grain, each grain's by bond.
     template <class Policy>
     void index(const Policy& policy, const Vec<int>& internalOf, int n)
     {
         const int bonds = count();
+        Exec::forEach(bonds, RemapBonds{view(), raw(internalOf)});
+        keys_.resize(bonds);
+        thrust::transform(policy, grainA_.begin(), grainA_.end(), grainB_.begin(), keys_.begin(),
+                          BondKey());
+        order_.resize(bonds);
+        thrust::sequence(policy, order_.begin(), order_.end());
+        thrust::stable_sort_by_key(policy, keys_.begin(), keys_.end(), order_.begin());
+        select(policy, order_);
         entryKeys_.resize(2 * std::size_t(bonds));
-        Exec::forEach(bonds, RemapBonds{view(), raw(internalOf), raw(entryKeys_)});
+        Exec::forEach(bonds, BondEntryKeys{view(), raw(entryKeys_)});
         grainEntry_.resize(2 * std::size_t(bonds));
         thrust::sequence(policy, grainEntry_.begin(), grainEntry_.end());
         thrust::stable_sort_by_key(policy, entryKeys_.begin(), entryKeys_.end(),

@@ -49,6 +49,9 @@ public:
     }
     virtual BondData bonds() const { return BondData{}; }
     virtual BondCounts bondCounts() const { return BondCounts{}; }
+    //- The largest bond stiffness k_ne A of the bonds present and of those formation may add
+    //- (the critical time step); 0 without bonds.
+    virtual double maximumBondStiffness() const { return 0.0; }
     virtual void setTimeStep(double dt) = 0;
     virtual void step(int nSteps) = 0;
 

@@ -8,7 +8,9 @@
 #include <thrust/copy.h>
 #include <thrust/iterator/counting_iterator.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <string>
 #include <utility>
@@ -74,7 +76,6 @@ void EngineImpl<Exec>::formBonds()
     Exec::forEach(added, FormBonds{grains_.view(), pairs_.view(), grains_.integer(fId),
                                    thrust::raw_pointer_cast(formationPairs_.data()), bonds_.view(),
                                    offset, p.seed, p.areaFraction[0], p.areaFraction[1]});
-    bonds_.sort(exec_.policy());
     bondsFormed_ += std::size_t(added);
     indexBonds();
 }
@@ -118,7 +119,6 @@ void EngineImpl<Exec>::addBonds(const std::vector<BondInit>& added)
         state[kBondOnsetRadius * m + old + k] = bond.patchRadius;
     }
     bonds_.assign(first, second, state);
-    bonds_.sort(exec_.policy());
     indexBonds();
 }
 
@@ -177,13 +177,20 @@ BondData EngineImpl<Exec>::bonds() const
     std::vector<double> geometry(bondReadback_.size());
     thrust::copy(bondReadback_.begin(), bondReadback_.end(), geometry.begin());
     const std::vector<double> state = bonds_.hostState();
+    const std::vector<int> first = bonds_.hostFirst(), second = bonds_.hostSecond();
+    // In the order of the grains' add-order indices (the store's follows the grain order).
+    std::vector<int> order(count);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) {
+                  return std::make_pair(first[a], second[a]) < std::make_pair(first[b], second[b]);
+              });
     auto component = [&](int c, std::size_t b) { return state[std::size_t(c) * count + b]; };
-    out.first = bonds_.hostFirst();
-    out.second = bonds_.hostSecond();
-    out.normal.assign(geometry.begin(), geometry.begin() + 3L * count);
-    out.point.assign(geometry.begin() + 3L * count, geometry.begin() + 6L * count);
-    for (std::size_t b = 0; b < std::size_t(count); ++b)
+    for (const int k : order)
     {
+        const std::size_t b = std::size_t(k);
+        out.first.push_back(first[b]);
+        out.second.push_back(second[b]);
         out.patchRadius.push_back(component(kBondPatchRadius, b));
         out.normalForce.push_back(component(kBondNormalForce, b));
         out.twistMoment.push_back(component(kBondTwistMoment, b));
@@ -193,9 +200,33 @@ BondData EngineImpl<Exec>::bonds() const
         {
             out.shearForce.push_back(component(kBondShearForce + d, b));
             out.bendMoment.push_back(component(kBondBendMoment + d, b));
+            out.normal.push_back(geometry[3 * b + d]);
+            out.point.push_back(geometry[3 * (count + b) + d]);
         }
     }
     return out;
+}
+
+template <class Exec>
+double EngineImpl<Exec>::maximumBondStiffness() const
+{
+    const BondParameters& b = params_.bonds;
+    if (!b.enabled)
+        return 0.0;
+    // Formation's largest: r_b^2 = f_max r_min^2 and Rbar >= r_min give
+    // k_ne A <= E pi f_max r_min / 2 <= E pi f_max R_max / 2.
+    double largest = b.formation == BondFormation::frozenOnContact
+                         ? 0.5 * M_PI * b.youngsModulus * b.areaFraction[1] * maximumRadius()
+                         : 0.0;
+    const int count = bonds_.count();
+    if (count > 0)
+    {
+        EngineImpl& e = self();
+        largest = std::max(largest,
+                           exec_.maxOf(count, BondStiffnessOf{e.grains_.real(fRadius),
+                                                              e.bonds_.view(), b.youngsModulus}));
+    }
+    return largest;
 }
 
 template <class Exec>
@@ -208,14 +239,14 @@ BondCounts EngineImpl<Exec>::bondCounts() const
     out.intact = std::size_t(count);
     if (count == 0)
         return out;
-    const BondData data = bonds();
+    const BondData data = bonds(); // sorted by the grains' add-order indices
     std::vector<double> touching(count);
     thrust::copy(bondReadback_.begin() + 6L * count, bondReadback_.end(), touching.begin());
     double radiusSum = 0.0;
     for (int b = 0; b < count; ++b)
     {
         out.apart += touching[b] == 0.0 ? 1 : 0;
-        radiusSum += data.patchRadius[b];
+        radiusSum += data.patchRadius[b]; // in that order: whatever the grain order
     }
     out.meanPatchRadius = radiusSum / count;
     return out;

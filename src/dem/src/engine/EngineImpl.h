@@ -98,6 +98,7 @@ public:
     void addBonds(const std::vector<BondInit>& bonds) override;
     BondData bonds() const override;
     BondCounts bondCounts() const override;
+    double maximumBondStiffness() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
 
     // ---- stepping -------------------------------------------------------------------------

@@ -282,8 +282,7 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
         bondsBroken_ = std::size_t(counters[1]);
     }
     bonds_.assign(first, second, state);
-    bonds_.sort(exec_.policy()); // already sorted when exported; keeps the invariant anyway
-    indexBonds();
+    indexBonds(); // the order they had: a function of the grain order, restored above
 }
 
 } // namespace detail

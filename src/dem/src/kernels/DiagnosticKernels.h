@@ -60,6 +60,38 @@ struct TouchingPairs
     }
 };
 
+//- Read-back of the bonds at the SoA state: each bond's unit normal (3) and contact point (3,
+//- wrapped into the periodic box), and whether its grains touch (1) or not (0) by the contact
+//- count's own test, so that touching pairs plus bonds apart count every pair once.
+struct BondReadback
+{
+    GrainView g;
+    BondView bonds;
+    BoxView box;
+    double* normal; //!< 3 per bond
+    double* point;  //!< 3 per bond
+    double* touching;
+
+    DEM_HD void operator()(int b) const
+    {
+        const int i = bonds.grainA[b], j = bonds.grainB[b];
+        const Vector3d xi = g.position(i);
+        const BondGeometry geometry = bondGeometry(box.separation(xi, g.position(j)), g.halfAxis(i),
+                                                   g.halfAxis(j), g.radius[i], g.radius[j]);
+        Vector3d c = xi + geometry.offsetA;
+        for (int d = 0; d < 2; ++d)
+            if (box.periodic[d])
+                c[d] -= box.length[d] * std::floor((c[d] - box.lower[d]) / box.length[d]);
+        for (int d = 0; d < 3; ++d)
+        {
+            normal[3L * b + d] = geometry.normal[d];
+            point[3L * b + d] = c[d];
+        }
+        const TouchingPairs test{g, PairView(), box, false, nullptr, true};
+        touching[b] = test.touching(i, j) ? 1.0 : 0.0;
+    }
+};
+
 //- Grain i's deepest overlap among the pairs it owns, relative to the smaller radius of the
 //- pair (the dilation radii): relative[i] (0 when none touches) and partner[i] (-1 then).
 struct DeepestOverlap

@@ -1,7 +1,7 @@
 // BondKernels.h
 // The bond store's kernels, written once for both backends: the per-bond force pass
 // (BondForceKernel: geometry and motion of the two grains, BondLaw::advance, a load record of
-// 9), the read-back of a bond's normal and contact point, the per-grain index of the bonds a
+// 9), the per-grain index of the bonds a
 // grain belongs to (the fixed-order gather in GatherKick), the bonded flag of each neighbour
 // pair (the pair kernel leaves bonded pairs to the bond) and the formation of new bonds.
 #pragma once
@@ -104,17 +104,27 @@ struct BondForceKernel
     BondLaw law;
     double* broken; //!< per bond: 1 broke this step, else 0
 
+    //- Bonds ahead whose B records are prefetched: the bonds follow A's memory order, B's
+    //- records lie a cell layer away or more, where the hardware prefetcher cannot foresee them.
+    static constexpr int kPrefetchDistance = 16;
+
     DEM_HD double operator()(int b) const
     {
         const long i = bonds.grainA[b], j = bonds.grainB[b];
         const double* xr = g.packedPositionRadius;
         const double* vw = g.packedVelocities;
+        if (b + kPrefetchDistance < bonds.count)
+        {
+            const long ahead = bonds.grainB[b + kPrefetchDistance];
+            prefetch(xr + 4 * ahead);
+            prefetch(vw + 8 * ahead);
+            prefetch(g.packedHalfAxis + 4 * ahead);
+        }
         const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
         const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
-        double delta;
         const BondGeometry geometry =
             bondGeometry(box.separation(xi, xj), g.packedHalfAxisOf(i), g.packedHalfAxisOf(j),
-                         xr[4 * i + 3], xr[4 * j + 3], delta);
+                         xr[4 * i + 3], xr[4 * j + 3]);
         BondMotion motion;
         motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
         motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
@@ -159,43 +169,27 @@ struct BondGather
     }
 };
 
-//- Read-back: the unit normal (3) and the contact point (3, wrapped into the periodic box) of
-//- each bond at the SoA state, and whether its grains touch (1) or not (0).
-struct BondReadback
+//- A bond's normal stiffness k_ne A = E / (2 Rbar) pi r_b^2 (the critical time step).
+struct BondStiffnessOf
 {
-    GrainView g;
+    const double* radius;
     BondView bonds;
-    BoxView box;
-    double* normal; //!< 3 per bond
-    double* point;  //!< 3 per bond
-    double* touching;
+    double youngsModulus;
 
-    DEM_HD void operator()(int b) const
+    DEM_HD double operator()(int b) const
     {
-        const int i = bonds.grainA[b], j = bonds.grainB[b];
-        const Vector3d xi = g.position(i);
-        double delta;
-        const BondGeometry geometry = bondGeometry(box.separation(xi, g.position(j)), g.halfAxis(i),
-                                                   g.halfAxis(j), g.radius[i], g.radius[j], delta);
-        Vector3d c = xi + geometry.offsetA;
-        for (int d = 0; d < 2; ++d)
-            if (box.periodic[d])
-                c[d] -= box.length[d] * std::floor((c[d] - box.lower[d]) / box.length[d]);
-        for (int d = 0; d < 3; ++d)
-        {
-            normal[3L * b + d] = geometry.normal[d];
-            point[3L * b + d] = c[d];
-        }
-        touching[b] = delta > 0.0 ? 1.0 : 0.0;
+        const double meanRadius = 0.5 * (radius[bonds.grainA[b]] + radius[bonds.grainB[b]]);
+        const double rb = bonds.state[long(kBondPatchRadius) * bonds.count + b];
+        return youngsModulus / (2.0 * meanRadius) * (3.14159265358979323846 * rb * rb);
     }
 };
 
-//- The sort key of a bond: (first, second) in one 64-bit integer.
+//- The sort key of a bond: its grains' internal indices (A, B) in one 64-bit integer.
 struct BondKey
 {
-    DEM_HD std::int64_t operator()(int first, int second) const
+    DEM_HD std::int64_t operator()(int a, int b) const
     {
-        return std::int64_t(first) << 32 | std::int64_t(std::uint32_t(second));
+        return std::int64_t(a) << 32 | std::int64_t(std::uint32_t(b));
     }
 };
 
@@ -213,20 +207,29 @@ struct InvertIds
     DEM_HD void operator()(int i) const { internalOf[id[i]] = i; }
 };
 
-//- Each bond's internal grain indices, and the keys of its two per-grain entries.
+//- Each bond's internal grain indices.
 struct RemapBonds
 {
     BondView bonds;
     const int* internalOf;
-    int* entryKey; //!< 2 per bond: the grain of entry 2 b + end
 
     DEM_HD void operator()(int b) const
     {
-        const int a = internalOf[bonds.first[b]], bb = internalOf[bonds.second[b]];
-        bonds.grainA[b] = a;
-        bonds.grainB[b] = bb;
-        entryKey[2L * b] = a;
-        entryKey[2L * b + 1] = bb;
+        bonds.grainA[b] = internalOf[bonds.first[b]];
+        bonds.grainB[b] = internalOf[bonds.second[b]];
+    }
+};
+
+//- The keys of each bond's two per-grain entries: the grain of entry 2 b + end.
+struct BondEntryKeys
+{
+    BondView bonds;
+    int* entryKey;
+
+    DEM_HD void operator()(int b) const
+    {
+        entryKey[2L * b] = bonds.grainA[b];
+        entryKey[2L * b + 1] = bonds.grainB[b];
     }
 };
 

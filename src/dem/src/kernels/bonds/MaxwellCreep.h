@@ -35,7 +35,8 @@ struct MaxwellCreep
             const double x = tau > 0.0 ? dt / tau : INFINITY;
             m.decay = std::exp(-x);
             // -expm1(-x) / x: accurate when dt << tau, where 1 - e^{-x} would cancel.
-            m.gain = tau > 0.0 ? -std::expm1(-x) / x : 0.0;
+            // dt = 0 (loads evaluated without advancing): the limit 1.
+            m.gain = tau > 0.0 ? (x > 0.0 ? -std::expm1(-x) / x : 1.0) : 0.0;
         }
         return m;
     }
