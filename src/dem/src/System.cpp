@@ -71,6 +71,53 @@ void checkBondStore(const BondParameters& b)
             "bonds.areaFraction[1]", b.areaFraction[1], "in [areaFraction[0], 1]");
 }
 
+//- The bond law's constants (src/kernels/bonds): each mechanism's only when it is on.
+void checkBondLaw(const BondParameters& b)
+{
+    if (!b.enabled)
+        return;
+    require(b.youngsModulus > 0 && std::isfinite(b.youngsModulus), "bonds.youngsModulus",
+            b.youngsModulus, "> 0 and finite");
+    require(b.shearToNormalStiffness > 0 && b.shearToNormalStiffness <= 1,
+            "bonds.shearToNormalStiffness", b.shearToNormalStiffness, "in (0, 1] (k_se / k_ne)");
+    require(b.normalDampingRatio >= 0 && b.normalDampingRatio <= 1, "bonds.normalDampingRatio",
+            b.normalDampingRatio, "in [0, 1] (fraction of critical)");
+    require(b.shearDampingRatio >= 0 && b.shearDampingRatio <= 1, "bonds.shearDampingRatio",
+            b.shearDampingRatio, "in [0, 1] (fraction of critical)");
+    require(b.temperature > -273.15 && b.temperature <= 0, "bonds.temperature", b.temperature,
+            "in (-273.15, 0] degrees C (ice)");
+    if (b.creep == BondCreep::maxwell)
+        require(b.contactViscosity > 0 && std::isfinite(b.contactViscosity),
+                "bonds.contactViscosity", b.contactViscosity, "> 0 and finite (maxwell creep)");
+    if (b.compressiveCreep == BondCompressiveCreep::powerLaw ||
+        b.sintering == BondSintering::pressureSintering)
+    {
+        require(b.creepPrefactor > 0 && std::isfinite(b.creepPrefactor), "bonds.creepPrefactor",
+                b.creepPrefactor, "> 0 and finite (powerLaw creep, pressureSintering)");
+        require(b.creepActivationEnergy >= 0 && std::isfinite(b.creepActivationEnergy),
+                "bonds.creepActivationEnergy", b.creepActivationEnergy,
+                ">= 0 and finite (powerLaw creep, pressureSintering)");
+    }
+    if (b.strength == BondStrength::iceTemperature)
+        require(b.strengthScale > 0 && std::isfinite(b.strengthScale), "bonds.strengthScale",
+                b.strengthScale, "> 0 and finite (iceTemperature strength)");
+    if (b.strength == BondStrength::constant)
+    {
+        require(b.tensileStrength >= 0 && std::isfinite(b.tensileStrength), "bonds.tensileStrength",
+                b.tensileStrength,
+                ">= 0 and finite (constant strength; 0: never fails in tension)");
+        require(b.shearStrength >= 0 && std::isfinite(b.shearStrength), "bonds.shearStrength",
+                b.shearStrength, ">= 0 and finite (constant strength; 0: never fails in shear)");
+    }
+    if (b.strength != BondStrength::none)
+    {
+        require(b.softeningRatio > 0 && std::isfinite(b.softeningRatio), "bonds.softeningRatio",
+                b.softeningRatio, "> 0 and finite (k_2 / k_ne)");
+        require(b.brokenFraction >= 0 && b.brokenFraction < 1, "bonds.brokenFraction",
+                b.brokenFraction, "in [0, 1) (of the mean radius)");
+    }
+}
+
 void checkParameters(const Parameters& p)
 {
     checkMaterial(p.grainGrain, "grainGrain");
@@ -86,6 +133,7 @@ void checkParameters(const Parameters& p)
         require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
                 p.boxUpper[d], "> boxLower");
     checkBondStore(p.bonds);
+    checkBondLaw(p.bonds);
 }
 
 void checkWall(const WallSpec& w, const Parameters& p)

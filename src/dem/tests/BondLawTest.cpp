@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 using dem::BondParameters;
 using dem::detail::BondGeometry;
@@ -497,4 +498,47 @@ TEST(BondLaw, DashpotsAreFractionsOfCritical)
     EXPECT_LT(relative(loads.forceOnA.x(), cn * v + kne * area * v * dt), 1e-12);
     EXPECT_LT(relative(loads.forceOnA.y(), cs * v + kse * area * v * dt), 1e-12);
     EXPECT_LT(relative(s.normalForce, kne * area * v * dt), 1e-12); // dashpots are not stored
+}
+
+TEST(BondLaw, ZeroStepEvaluatesWithoutChangingTheState)
+{
+    // dt = 0 (the engine's loads after grains were added): the loads of the state as it is,
+    // the state untouched bit for bit, whatever the mechanisms (bonds present when grains are
+    // added mid-run keep their state exactly).
+    BondParameters p = elastic();
+    p.creep = dem::BondCreep::maxwell;
+    p.contactViscosity = 1e3;
+    p.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
+    p.sintering = dem::BondSintering::pressureSintering;
+    p.strength = dem::BondStrength::constant;
+    p.tensileStrength = p.shearStrength = 1e2; // softening from the first steps,
+    p.softeningRatio = 0.01;                   // to zero only at x = 101
+    const BondGeometry g =
+        bondGeometry(Vector3d(1.5e-3, 0.9e-3, -0.4e-3), Vector3d(0.3e-3, 0, 0.2e-3),
+                     Vector3d(0, 0.4e-3, 0), 0.8e-3, 0.9e-3);
+    const BondMotion moving{Vector3d(0.01, 0.02, 0),
+                            Vector3d(-0.01, 0.0, 0.02),
+                            Vector3d(1.0, -2.0, 0.5),
+                            Vector3d(0.3, 0.2, -1.0),
+                            0.0,
+                            0.0};
+    BondState s = fresh();
+    for (int i = 0; i < 20; ++i)
+        BondLaw::make(p, dt).advance(s, g, moving);
+    std::printf("  state: r_b %.6e m, softening %d, broken %d\n", s.patchRadius, int(s.softening),
+                int(s.broken));
+    ASSERT_TRUE(s.softening && !s.broken);
+    const BondState before = s;
+    const BondLoads loads =
+        BondLaw::make(p, 0.0).advance(s, g, driven(Vector3d::Zero(), Vector3d::Zero()));
+    const auto same = [](const auto& a, const auto& b)
+    { return std::memcmp(&a, &b, sizeof a) == 0; };
+    EXPECT_TRUE(same(before.normalForce, s.normalForce) && same(before.shearForce, s.shearForce) &&
+                same(before.twistMoment, s.twistMoment) && same(before.bendMoment, s.bendMoment) &&
+                same(before.patchRadius, s.patchRadius) &&
+                same(before.onsetRadius, s.onsetRadius) && same(before.age, s.age) &&
+                before.softening == s.softening && before.broken == s.broken);
+    const Vector3d force = s.normalForce * g.normal + s.shearForce;
+    std::printf("  force %.9e N (N n + S %.9e N)\n", loads.forceOnA.norm(), force.norm());
+    EXPECT_EQ((loads.forceOnA - force).norm(), 0.0);
 }

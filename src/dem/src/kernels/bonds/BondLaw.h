@@ -66,6 +66,7 @@ struct BondLaw
     PowerLawCreep compressiveCreep;
     IceStrength strength;
     Sintering sintering;
+    double normalDashpot = 0.0, shearDashpot = 0.0; //!< 2 zeta_n, 2 zeta_s sqrt(k_se/k_ne)
 
     //- Relaxation times of grain-boundary creep: tau_shear = tau_twist = nu_s / (k_se/k_ne E),
     //- tau_bend = nu_s / E (the viscosity over the patch's modulus in that mode).
@@ -84,11 +85,17 @@ struct BondLaw
         law.compressiveCreep = PowerLawCreep::make(parameters, timeStep);
         law.strength = IceStrength::make(parameters);
         law.sintering = Sintering::make(parameters, timeStep);
+        law.normalDashpot = 2.0 * parameters.normalDampingRatio;
+        law.shearDashpot =
+            2.0 * parameters.shearDampingRatio * std::sqrt(parameters.shearToNormalStiffness);
         return law;
     }
 
     //- Advance state s over one step dt with the grains' motion and return the loads. Sets
-    //- s.broken when the bond breaks (its loads this step are then zero).
+    //- s.broken when the bond breaks (its loads this step are then zero). dt = 0 evaluates
+    //- the loads of s as it is and leaves s untouched, bit for bit (the engine's loads of
+    //- freshly added grains: bonds already present, when grains are added mid-run, keep their
+    //- state exactly, whatever the mechanisms).
     DEM_HD BondLoads advance(BondState& s, const BondGeometry& g, const BondMotion& m) const
     {
         BondLoads loads{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
@@ -96,17 +103,46 @@ struct BondLaw
             return loads;
         const Vector3d& n = g.normal;
         const double meanRadius = 0.5 * (g.radiusA + g.radiusB);
+        const PatchIncrement du = patchIncrement(n, g.offsetA, g.offsetB, m.velocityA, m.velocityB,
+                                                 m.omegaA, m.omegaB, dt);
+        PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
+                                                p.shearToNormalStiffness, meanRadius);
+        if (dt > 0.0 && !evolve(s, g, m, du, meanRadius, patch))
+        {
+            s.broken = true;
+            return loads;
+        }
 
+        // The loads: the elastic loads and the dashpots of the patch as it is now,
+        // c = 2 zeta sqrt(m* k A) (k_se A = (k_se/k_ne) k_ne A: one root for both).
+        const double inverseMassSum = m.inverseMassA + m.inverseMassB;
+        // Two immovable grains (no inverse mass): no dashpot rather than an infinite one.
+        const double reducedMass = inverseMassSum > 0.0 ? 1.0 / inverseMassSum : 0.0;
+        const double root = std::sqrt(reducedMass * patch.normalStiffness * patch.area);
+        const double normalSpeed = du.velocity.dot(n);
+        const Vector3d force = (s.normalForce + normalDashpot * root * normalSpeed) * n +
+                               s.shearForce +
+                               (shearDashpot * root) * (du.velocity - normalSpeed * n);
+        const Vector3d moment = s.twistMoment * n + s.bendMoment;
+        loads.forceOnA = force;
+        loads.torqueOnA = g.offsetA.cross(force) + moment;
+        loads.torqueOnB = -g.offsetB.cross(force) - moment;
+        return loads;
+    }
+
+private:
+    //- One step of the state: returns false when the bond breaks. patch: the section at the
+    //- start of the step, on return the section at its end.
+    DEM_HD bool evolve(BondState& s, const BondGeometry& g, const BondMotion& m,
+                       const PatchIncrement& du, double meanRadius, PatchSection& patch) const
+    {
+        const Vector3d& n = g.normal;
         // 1. Stored in-plane loads into the current plane, turning with the pair's mean rotation.
         const Vector3d theta = (0.5 * dt) * (m.omegaA + m.omegaB);
         s.shearForce = rotateIntoPlane(s.shearForce, n, theta);
         s.bendMoment = rotateIntoPlane(s.bendMoment, n, theta);
 
         // 2. Elastic increments with the patch at the start of the step, and creep.
-        const PatchIncrement du = patchIncrement(n, g.offsetA, g.offsetB, m.velocityA, m.velocityB,
-                                                 m.omegaA, m.omegaB, dt);
-        PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
-                                                p.shearToNormalStiffness, meanRadius);
         s.normalForce += patch.normalStiffness * patch.area * du.normal;
         s.normalForce = compressiveCreep.relax(s.normalForce, patch.area);
         s.shearForce =
@@ -117,64 +153,43 @@ struct BondLaw
             s.bendMoment, Vector3d(patch.normalStiffness * patch.bendInertia * du.bend));
 
         // 3. Sintering grows an intact patch under compression (new material, no load).
-        if (!s.softening)
+        if (sintering.on && !s.softening)
         {
             const double reducedRadius = g.radiusA * g.radiusB / (g.radiusA + g.radiusB);
             s.patchRadius = sintering.grow(s.patchRadius, s.normalForce, reducedRadius);
-            s.onsetRadius = s.patchRadius;
-        }
-
-        // 4. Strength: past it, the patch shrinks along the softening branch or breaks.
-        if (strength.on)
-        {
             patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
                                        meanRadius);
-            const double x =
-                strength.loadRatio(s.normalForce, s.shearForce, s.twistMoment, s.bendMoment,
-                                   patch.radius, patch.area, patch.bendInertia, patch.twistInertia);
-            if (x > 1.0)
-            {
-                s.softening = true;
-                const double fraction = strength.areaFraction(x);
-                const double target = fraction > 0.0 ? s.onsetRadius * std::sqrt(fraction) : 0.0;
-                if (!(target >= strength.brokenFraction * meanRadius))
-                {
-                    s.broken = true;
-                    return loads;
-                }
-                if (target < s.patchRadius)
-                {
-                    const double radiusRatio = target / s.patchRadius;
-                    const double areaRatio = radiusRatio * radiusRatio;
-                    const double inertiaRatio = areaRatio * areaRatio;
-                    s.normalForce *= areaRatio;
-                    s.shearForce *= areaRatio;
-                    s.twistMoment *= inertiaRatio;
-                    s.bendMoment *= inertiaRatio;
-                    s.patchRadius = target;
-                }
-            }
         }
+        if (!s.softening)
+            s.onsetRadius = s.patchRadius;
         s.age += dt;
 
-        // 5. Loads: the elastic loads and the dashpots of the patch as it is now.
-        patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
-                                   meanRadius);
-        const double inverseMassSum = m.inverseMassA + m.inverseMassB;
-        // Two immovable grains (no inverse mass): no dashpot rather than an infinite one.
-        const double reducedMass = inverseMassSum > 0.0 ? 1.0 / inverseMassSum : 0.0;
-        const double normalDamping = 2.0 * p.normalDampingRatio *
-                                     std::sqrt(reducedMass * patch.normalStiffness * patch.area);
-        const double shearDamping =
-            2.0 * p.shearDampingRatio * std::sqrt(reducedMass * patch.shearStiffness * patch.area);
-        const double normalSpeed = du.velocity.dot(n);
-        const Vector3d force = (s.normalForce + normalDamping * normalSpeed) * n + s.shearForce +
-                               shearDamping * (du.velocity - normalSpeed * n);
-        const Vector3d moment = s.twistMoment * n + s.bendMoment;
-        loads.forceOnA = force;
-        loads.torqueOnA = g.offsetA.cross(force) + moment;
-        loads.torqueOnB = -g.offsetB.cross(force) - moment;
-        return loads;
+        // 4. Strength: past it, the patch shrinks along the softening branch or breaks.
+        if (!strength.on)
+            return true;
+        const double x =
+            strength.loadRatio(s.normalForce, s.shearForce, s.twistMoment, s.bendMoment,
+                               patch.radius, patch.area, patch.bendInertia, patch.twistInertia);
+        if (!(x > 1.0))
+            return true;
+        s.softening = true;
+        const double fraction = strength.areaFraction(x);
+        const double target = fraction > 0.0 ? s.onsetRadius * std::sqrt(fraction) : 0.0;
+        if (!(target >= strength.brokenFraction * meanRadius))
+            return false;
+        if (target < s.patchRadius)
+        {
+            const double areaRatio = (target / s.patchRadius) * (target / s.patchRadius);
+            const double inertiaRatio = areaRatio * areaRatio;
+            s.normalForce *= areaRatio;
+            s.shearForce *= areaRatio;
+            s.twistMoment *= inertiaRatio;
+            s.bendMoment *= inertiaRatio;
+            s.patchRadius = target;
+            patch = PatchSection::make(s.patchRadius, p.youngsModulus, p.shearToNormalStiffness,
+                                       meanRadius);
+        }
+        return true;
     }
 };
 
