@@ -1,9 +1,14 @@
-"""The wallStress and packingStatistics function objects (issue 11) on a
-real demFoam run, checked against conservation laws: tests/cases/grainColumn
-(256 spheres, 2600 kg/m^3, periodic 0.1 m x 0.1 m box, fixed base, a lid
-under a normal stress sigma0 = 1e4 Pa) settled to rest under gravity."""
+"""The wallStress and packingStatistics function objects and the bonds'
+VTK output (issue 11) on real demFoam runs, checked against conservation
+laws and against each other: tests/cases/grainColumn (256 spheres,
+2600 kg/m^3, periodic 0.1 m x 0.1 m box, fixed base, a lid under a normal
+stress sigma0 = 1e4 Pa) settled to rest under gravity, the same with bonds
+frozen on contact, and tests/cases/wallBox (walls on x, a free lid)."""
+
+import os
 
 import numpy as np
+import pytest
 
 from darcydem.case import Case
 from darcydem.foamfiles import grain_files, read_columns, read_vtp, read_vtp_lines
@@ -108,21 +113,30 @@ def minimum_image(d, box):
     return d
 
 
-def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
+STRENGTHS = {
+    "unbreakable": "{ type none; }",
+    # weak (about 16 N on a mean patch): bonds break as the column settles under the lid
+    "weak": "{ type constant; tensileStrength 1e6; shearStrength 1e6; }",
+}
+
+
+@pytest.mark.parametrize("strength", STRENGTHS)
+def test_bonds_frozen_on_contact_written_for_paraview_and_counted(strength):
     """Grains falling in the column freeze together where they touch
-    (formation frozenOnContact, bonds that never break). At every write
+    (formation frozenOnContact; bonds that never break, or weak ones that
+    break as the column settles and re-freeze). At every write
     time the bonds' .vtp (read by VTK's own reader, listed in
     bonds.vtp.series) holds one line per intact bond counted by
     packingStatistics; its lines run from the first grain's centre to the
     nearest image of the second's (round-off of the coordinates, 1e-12 of
     the box); every patch radius is the one the formation drew from
-    areaFraction (r_b^2 / r_min^2 in [0.03125, 0.09375], round-off); the
-    counts conserve bonds (intact = formed - broken, no breakage: broken =
-    0); bondsApart is the number of bonds whose spheres do not touch and
+    areaFraction (r_b^2 / r_min^2 in [0.03125, 0.09375], round-off; a
+    softening bond's only shrinks); the counts conserve bonds (intact =
+    formed - broken; unbreakable: broken = 0, weak: broken > 0); bondsApart is the number of bonds whose spheres do not touch and
     the coordination number 2 (touching pairs + apart) / grains, with the
     touching pairs from the grains' contactCount."""
-    c = Case("grainColumn", "bonded_column")
-    c.set("system/controlDict", "endTime", 0.4)
+    c = Case("grainColumn", f"bonded_column_{strength}")
+    c.set("system/controlDict", "endTime", 0.1)
     c.set("system/controlDict", "deltaT", 1e-3)
     c.set("system/controlDict", "writeInterval", 100)
     c.set("system/controlDict", "functions", FUNCTIONS)
@@ -130,15 +144,18 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
     # E: a bond of the mean patch (r_b^2 = r^2/16) about as stiff as the
     # contacts (k_ne pi r_b^2 = E pi r / 32 ~ 9e5 N/m for r = 9 mm)
     c.set(DEM, "bonds", "{ youngsModulus 1e9; normalDampingRatio 0.2; shearDampingRatio 0.2;"
-                        " strength { type none; } formation { type frozenOnContact;"
-                        " areaFraction (0.03125 0.09375); interval 10; seed 3; } }")
+                        f" strength {STRENGTHS[strength]} formation {{ type frozenOnContact;"
+                        f" areaFraction (0.03125 0.09375); interval 10; seed 3; }} }}")
     c.run("blockMesh")
     c.run("demFoam")
 
     packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
     np.testing.assert_array_equal(packing["bondsIntact"],
                                   packing["bondsFormed"] - packing["bondsBroken"])
-    assert np.all(packing["bondsBroken"] == 0)
+    if strength == "unbreakable":
+        assert np.all(packing["bondsBroken"] == 0)
+    else:
+        assert packing["bondsBroken"][-1] > 0
     box = np.array([0.1, 0.1])
 
     bond_files = grain_files(c.path, "bonds")
@@ -160,7 +177,8 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
                                    rtol=0, atol=1e-12 * box[0])
         r = grains["radius"]
         fraction = bonds["patchRadius"]**2 / np.minimum(r[a], r[b])**2
-        assert fraction.min() >= 0.03125 * (1 - 1e-12)
+        intact = bonds["softening"] == 0
+        assert np.all(fraction[intact] >= 0.03125 * (1 - 1e-12))
         assert fraction.max() <= 0.09375 * (1 + 1e-12)
         np.testing.assert_allclose(packing["meanPatchRadius"][row],
                                    bonds["patchRadius"].mean(), rtol=1e-12)
@@ -168,7 +186,107 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted():
         assert packing["bondsApart"][row] == apart
         touching = grains["contactCount"].sum() / 2
         assert packing["coordinationNumber"][row] == 2 * (touching + apart) / len(r)
-        print(f"t = {t} s: {n} bonds, {apart} apart, r_b^2/r_min^2 in "
+        print(f"{strength}, t = {t} s: {n} bonds ({packing['bondsFormed'][row]:.0f} formed,"
+              f" {packing['bondsBroken'][row]:.0f} broken, {np.sum(~intact)} softening),"
+              f" {apart} apart, r_b^2/r_min^2 in "
               f"[{fraction.min():.5f}, {fraction.max():.5f}], coordination number "
               f"{packing['coordinationNumber'][row]:.3f}")
     assert packing["bondsIntact"][-1] > 0
+
+
+def write_layered_grains(path, seed=1):
+    """72 spheres of radius 4 to 4.5 mm in 6 layers of 3 x 4 inside
+    wallBox's walls (x in [0, 0.04], periodic y of 0.04), alternate layers
+    shifted by half a spacing in x, so that they settle into each other and
+    press on the side walls."""
+    rng = np.random.default_rng(seed)
+    with open(path, "w") as f:
+        f.write("# x y z r: 6 layers of 3 x 4 spheres, alternate layers shifted in x\n")
+        for k in range(6):
+            for i in range(3):
+                for j in range(4):
+                    x = 0.006 + 0.010 * i + (0.005 if k % 2 else 0.0)
+                    r = rng.uniform(0.004, 0.0045)
+                    f.write(f"{x:.6f} {0.005 + 0.010 * j:.6f} {0.006 + 0.010 * k:.6f} {r:.6f}\n")
+
+
+def test_free_lid_and_side_walls_in_balance():
+    """tests/cases/wallBox with 72 spheres: walls on x (0 and 0.04 m),
+    periodic y (0.04 m), a fixed base and a free lid of mass m under gravity
+    ramped from zero over 0.05 s, settled to rest with drag; the walls are
+    frictionless (the files hold normal forces only). Momentum
+    balance at rest (end of the run): the lid carries its weight (lid
+    stress m g / A, A the x-y area between the x walls), the base the lid's
+    and the grains' weight, and the x walls' forces cancel; tolerance as
+    for the stress lid above, the force the grains' remaining motion
+    carries. Areas by their definition at every row (round-off): a z wall
+    Ly (x_right - x_left), an x wall Ly (lid - base); density over the
+    volume between the six bounds."""
+    lid_mass, ly, drag = 0.05, 0.04, 0.1
+    c = Case("wallBox", "packing_free_lid")
+    write_layered_grains(c.file("0/grains"))
+    c.set("system/controlDict", "endTime", 0.5)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 500)
+    c.set("system/controlDict", "functions", FUNCTIONS)
+    c.set(DEM, "viscousDrag", drag)
+    c.set(DEM, "timeStep", 5e-6)     # 0.19 sqrt(m_min/k) for the 4 mm grains
+    # The files hold the walls' normal forces: frictional walls would take part of the
+    # weight by friction on the sides (Janssen) and of the side thrust on the base
+    for wall in ("bottom", "left", "right"):
+        c.set(DEM, f"walls/{wall}/frictional", "no")
+    c.run("blockMesh")
+    c.run("demFoam")
+    walls = read_columns(c.file("postProcessing/wallStress/0/wallStress.dat"))
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    assert list(walls) == ["time"] + [f"{w}_{q}" for w in ("bottom", "left", "right", "lid")
+                                      for q in ("position", "force", "stress")]
+
+    mass, volume = grain_masses(c)
+    t, vtp = grain_files(c.path)[-1]
+    grains = read_vtp(vtp)
+    speed = np.linalg.norm(grains["velocity"], axis=1)
+    bound = np.sum((np.sqrt(STIFFNESS * mass) + drag) * speed)
+    row = np.flatnonzero(np.isclose(walls["time"], t, rtol=0, atol=1e-9))[-1]
+    lid_error = walls["lid_force"][row] - lid_mass * G
+    base_error = walls["bottom_force"][row] + (lid_mass + mass.sum()) * G
+    side_error = walls["left_force"][row] + walls["right_force"][row]
+    print(f"t = {t} s: lid force {walls['lid_force'][row]:.9g} N (m g = {lid_mass * G:.9g}),"
+          f" lid stress {walls['lid_stress'][row]:.6g} Pa, base {walls['bottom_force'][row]:.9g}"
+          f" N, sides {walls['left_force'][row]:.4e} and {walls['right_force'][row]:.4e} N;"
+          f" errors {lid_error:.2e}, {base_error:.2e}, {side_error:.2e} N; bound {bound:.2e} N")
+    assert max(abs(lid_error), abs(base_error), abs(side_error)) < bound
+    assert bound < 1e-3 * lid_mass * G
+    assert walls["right_force"][row] > 100 * bound     # the sides do carry a load
+
+    width = walls["right_position"] - walls["left_position"]
+    height = walls["lid_position"] - walls["bottom_position"]
+    for wall in ("bottom", "lid"):
+        np.testing.assert_allclose(walls[f"{wall}_stress"] * ly * width,
+                                   walls[f"{wall}_force"], rtol=1e-12, atol=0)
+    for wall in ("left", "right"):
+        np.testing.assert_allclose(walls[f"{wall}_stress"] * ly * height,
+                                   walls[f"{wall}_force"], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(packing["density"], mass.sum() / (ly * width * height),
+                               rtol=1e-12)
+    np.testing.assert_allclose(packing["solidFraction"], volume.sum() / (ly * width * height),
+                               rtol=1e-12)
+    np.testing.assert_allclose(packing["strainRate"], -packing["lidVelocity"] / height,
+                               rtol=1e-12)
+
+
+def test_bonds_output_can_be_switched_off():
+    """output { bonds no; }: the grains are written, the bonds not (and with
+    bonds and no such entry they are: the test above)."""
+    c = Case("grainColumn", "bonds_output_off")
+    c.set("system/controlDict", "endTime", 0.01)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 10)
+    c.set(DEM, "bonds", "{ youngsModulus 1e9; formation { type frozenOnContact; } }")
+    c.set(DEM, "output", "{ format binary; bonds no; }")
+    c.run("blockMesh")
+    c.run("demFoam")
+    written = sorted(os.listdir(c.file("VTK")))
+    print("VTK/:", written)
+    assert "grains.vtp.series" in written
+    assert not any(name.startswith("bonds") for name in written)

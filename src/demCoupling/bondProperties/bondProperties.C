@@ -123,7 +123,7 @@ Foam::bondProperties::bondProperties(const dictionary& demProperties)
 
     const dictionary& bonds = demProperties.subDict("bonds");
     checkEntryNames(bonds);
-    Info<< "    bonds on" << endl;
+    Info<< "Reading bonds (" << bonds.name() << ")" << endl;
 
     dem::BondParameters& p = parameters_;
     p.enabled = true;

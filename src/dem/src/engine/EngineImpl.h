@@ -94,10 +94,10 @@ public:
     void setGrainVelocities(const std::vector<int>& indices, const std::array<double, 3>& velocity,
                             const std::array<double, 3>& angularVelocity) override;
     void setViscousDrag(double drag) override { params_.viscousDrag = drag; }
-    void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
     void addBonds(const std::vector<BondInit>& bonds) override;
     BondData bonds() const override;
     BondCounts bondCounts() const override;
+    void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
     double maximumBondStiffness() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
 

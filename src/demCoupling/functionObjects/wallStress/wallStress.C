@@ -7,7 +7,6 @@
 #include "demLibraryCall.H"
 #include "demCloud.H"
 #include "wallEnclosure.H"
-#include "IOdictionary.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -24,45 +23,15 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::wordList Foam::functionObjects::wallStress::wallNames
-(
-    const label nWalls
-) const
-{
-    wordList names;
-    const IOdictionary& properties =
-        mesh_.lookupObject<IOdictionary>("demProperties");
-    if (properties.isDict("walls"))
-    {
-        for (const entry& e : properties.subDict("walls"))
-        {
-            if (e.isDict())
-            {
-                names.append(e.keyword());
-            }
-        }
-    }
-    names.resize(nWalls);
-    for (label w = 0; w < nWalls; ++w)
-    {
-        if (names[w].empty())
-        {
-            names[w] = "wall" + Foam::name(w);
-        }
-    }
-    return names;
-}
-
-
 void Foam::functionObjects::wallStress::writeFileHeader
 (
     Ostream& os,
-    const label nWalls
+    const wordList& walls
 )
 {
     writeHeader(os, "Wall stresses (doc/CASE-FORMAT.md, function objects)");
     writeCommented(os, "time");
-    for (const word& wall : wallNames(nWalls))
+    for (const word& wall : walls)
     {
         for (const char* column : {"_position", "_force", "_stress"})
         {
@@ -122,7 +91,7 @@ bool Foam::functionObjects::wallStress::write()
             Ostream& os = file();
             if (!headerWritten_)
             {
-                writeFileHeader(os, nWalls);
+                writeFileHeader(os, cloud.walls().names());
             }
             writeCurrentTime(os);
             for (label w = 0; w < nWalls; ++w)
