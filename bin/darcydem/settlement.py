@@ -13,11 +13,12 @@ Figs 5-10, run through real case directories:
                freezes at once (bonds formation frozenOnContact), so the grains
                end as a bonded, loose skeleton touching every wall;
   2. relax     the walls stopped, a global viscous drag takes out the
-               contraction's remaining momentum; its demState is the sample
-               every settlement run starts from (identical for all);
+               contraction's remaining momentum, a light stress-controlled lid
+               closes the gap the skeleton leaves as it springs back; its
+               demState is the sample every settlement run starts from;
   3. settle    the lid becomes free (0.125 kg), gravity ramps up from zero,
                one run per contact viscosity nu_s (0.0016, 0.016, 0.16 and
-               1 MPa s).
+               1 MPa s), and optionally one with a creep mechanism off.
 
 The measurements come from the function objects wallStress (lid stress
 P_zz, side stress P_xx) and packingStatistics (density, coordination number,
@@ -29,7 +30,6 @@ the DEM backend (bin/darcydem/case.py). Sizes: SIZES below.
 
 import argparse
 import json
-import math
 import os
 import subprocess
 import sys
@@ -46,7 +46,7 @@ PAPER_BOX = (0.019, 0.016, 0.019)       # x, y, z [m]
 LID_MASS = 0.125                         # [kg]
 PAPER_VISCOSITIES = (1.6e3, 1.6e4, 1.6e5, 1.0e6)   # contact viscosity nu_s [Pa s]
 ICE_DENSITY = 917.0
-# Load scaled with stiffness and strength (1e-3): gravity 9.81e-3 m/s^2
+# Load scaled with the stiffness (1e-3): gravity 9.81e-3 m/s^2 under the real lid
 GRAVITY = 9.81e-3
 GRAVITY_RAMP = 0.1                       # [s] from zero to GRAVITY
 TIME_STEP = 1e-5                         # the paper's DEM step [s]
@@ -64,13 +64,13 @@ SIZES = {
                  viscosities=(1.6e5, 1.0e6), strainRate=-2.0, seed=2),
 }
 
-# Preparation: grains R in [0.4, 0.6] mm, aspect (length / width) in [1.5, 3]
+# Preparation: grains R in [0.4, 0.6] mm, aspect (length / width) in [2, 4]
 RADIUS = (4e-4, 6e-4)
 ASPECT = (2.0, 4.0)
 CONTRACTION = 1.5      # the loose box is this much wider (x) and taller (z)
 SWEEP = 0.9            # the grains' contraction rate over the walls'
-# strainRate (SIZES): -1 1/s closes neighbours at about 2 mm/s, whose kinetic energy is
-# about 1/30 of what a bond stores at its tensile strength: bonds survive their freezing
+# strainRate (SIZES): -1 1/s closes neighbours at about 2 mm/s, whose kinetic energy is a
+# few hundred times less than a bond stores at its tensile strength: bonds survive freezing
 RELAX_TIME = 0.1        # [s] with the drag below
 RELAX_LID_MASS = 1e-3   # [kg]: the lid closes a gap of 0.1 mm in about 0.02 s
 RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
