@@ -548,6 +548,10 @@ def main(argv):
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             log=lambda m: print(m, flush=True))
     if a.plot_only:
+        # keep what the runs recorded (preparation, timings); the figures' numbers update
+        previous = os.path.join(study.dir, "results.json")
+        if os.path.exists(previous):
+            study.results = json.load(open(previous))
         study.plot(study.existing_runs())
         study.write_results()
         return
