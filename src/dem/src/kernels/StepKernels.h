@@ -361,10 +361,15 @@ struct PairForceKernel
         const CapsulePairGeometry geometry =
             capsulePairGeometry(d, load(ax, 4 * i), load(ax, 4 * j), ri, rj);
         // A bonded pair is the bond's: zero contact loads and a cleared history, so that the
-        // contact law starts afresh from the overlap it finds when the bond breaks.
+        // contact law starts afresh from the overlap it finds when the bond breaks. (The flag is
+        // read for every pair: a load behind && would be conditional, and the loop would not
+        // vectorise.)
         bool touching = geometry.touching;
         if constexpr (Shapes::kBonds)
-            touching = touching && pairs.bonded[p] == 0;
+        {
+            const bool unbonded = pairs.bonded[p] == 0;
+            touching = touching & unbonded;
+        }
 
         constexpr int kReactionComponents = kCapsuleReactionComponents;
         const long cs = pairs.stride();
