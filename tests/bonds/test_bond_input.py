@@ -57,6 +57,12 @@ def test_every_mechanism_is_read():
         assert f"bond {family} {model}" in log
 
 
+def test_zero_strength_switches_one_failure_mode_off():
+    """A bond that fails only in shear: tensileStrength 0 is accepted."""
+    run("tension_never_fails", bonds_entry(
+        strength="type constant; tensileStrength 0; shearStrength 1e5;"), expect_fail=False)
+
+
 def test_left_out_mechanism_is_off_and_logged():
     log = run("creep_left_out", bonds_entry(creep=None), expect_fail=False)
     assert "bond creep none (no 'creep' entry)" in log
@@ -94,16 +100,20 @@ def test_mechanism_must_be_a_dictionary():
     ("temperature -10;", "Entry 'youngsModulus' not found"),   # required
     ("youngsModulus 0;", "Entry 'youngsModulus' in .* must be > 0, found 0"),
     ("youngsModulus 9e6; shearToNormalStiffness 1.5;",
-     "Entry 'shearToNormalStiffness' in .* must lie in [0, 1], found 1.5"),
+     "Entry 'shearToNormalStiffness' in .* must lie in (0, 1], found 1.5"),
+    ("youngsModulus 9e6; shearToNormalStiffness 0;",
+     "Entry 'shearToNormalStiffness' in .* must lie in (0, 1], found 0"),
     ("youngsModulus 9e6; normalDampingRatio -0.1;",
      "Entry 'normalDampingRatio' in .* must lie in [0, 1], found -0.1"),
     ("youngsModulus 9e6; shearDampingRatio 2;",
      "Entry 'shearDampingRatio' in .* must lie in [0, 1], found 2"),
     ("youngsModulus 9e6; temperature 5;",
-     "Entry 'temperature' in .* must lie in [-273.15, 0], found 5"),
+     "Entry 'temperature' in .* must lie in (-273.15, 0], found 5"),
+    ("youngsModulus 9e6; temperature -273.15;",
+     "Entry 'temperature' in .* must lie in (-273.15, 0], found -273.1"),
 ])
 def test_constant_out_of_range(constants, rule):
-    msg = run("constant_" + constants.split(";")[-2].split()[0], bonds_entry(constants))
+    msg = run(re.sub(r"\W+", "_", "constant " + constants).strip("_"), bonds_entry(constants))
     assert "demProperties.bonds" in msg
     head, tail = rule.split(" in .* ") if " in .* " in rule else (rule, "")
     assert head in msg and tail in msg
@@ -116,10 +126,11 @@ def test_constant_out_of_range(constants, rule):
     ("compressiveCreep", "type powerLaw; activationEnergy -5;", "must be >= 0, found -5"),
     ("strength", "type iceTemperature; scale 0;", "must be > 0, found 0"),
     ("strength", "type iceTemperature; softeningRatio -1;", "must be > 0, found -1"),
-    ("strength", "type iceTemperature; brokenFraction 1.5;", "must lie in [0, 1], found 1.5"),
+    ("strength", "type iceTemperature; brokenFraction 1.5;", "must lie in [0, 1), found 1.5"),
+    ("strength", "type iceTemperature; brokenFraction 1;", "must lie in [0, 1), found 1"),
     ("strength", "type constant; shearStrength 1e5;", "Entry 'tensileStrength' not found"),
     ("strength", "type constant; tensileStrength 1e5; shearStrength -1;",
-     "must be > 0, found -1"),
+     "must be >= 0, found -1"),
     ("formation", "type frozenOnContact; areaFraction (0.2 0.1);",
      "0 < min <= max <= 1, found (0.2 0.1)"),
     ("formation", "type frozenOnContact; areaFraction (0 0.1);",

@@ -128,16 +128,19 @@ Foam::bondProperties::bondProperties(const dictionary& demProperties)
     dem::BondParameters& p = parameters_;
     p.enabled = true;
     p.youngsModulus = inputChecks::getPositive(bonds, "youngsModulus");
-    p.shearToNormalStiffness = inputChecks::getInRange
+    p.shearToNormalStiffness = inputChecks::getInInterval
     (
-        bonds, "shearToNormalStiffness", p.shearToNormalStiffness, 0, 1
+        bonds, "shearToNormalStiffness", p.shearToNormalStiffness, 0, 1,
+        true, false
     );
     p.normalDampingRatio =
         inputChecks::getInRange(bonds, "normalDampingRatio", 0, 0, 1);
     p.shearDampingRatio =
         inputChecks::getInRange(bonds, "shearDampingRatio", 0, 0, 1);
-    p.temperature =
-        inputChecks::getInRange(bonds, "temperature", p.temperature, -273.15, 0);
+    p.temperature = inputChecks::getInInterval
+    (
+        bonds, "temperature", p.temperature, -273.15, 0, true, false
+    );
 
     selectMechanisms(bonds);
 

@@ -81,9 +81,26 @@ Foam::scalar Foam::inputChecks::getInRange
     const scalar upper
 )
 {
+    return getInInterval(dict, key, defaultValue, lower, upper, false, false);
+}
+
+
+Foam::scalar Foam::inputChecks::getInInterval
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar defaultValue,
+    const scalar lower,
+    const scalar upper,
+    const bool lowerOpen,
+    const bool upperOpen
+)
+{
     const scalar value = dict.getOrDefault<scalar>(key, defaultValue);
 
-    if (!(value >= lower && value <= upper))
+    const bool aboveLower = lowerOpen ? value > lower : value >= lower;
+    const bool belowUpper = upperOpen ? value < upper : value <= upper;
+    if (!(aboveLower && belowUpper))
     {
         // Ten digits: limits as a user writes them (-273.15, not
         // -273.14999999999998 at a case's writePrecision 17)
@@ -91,11 +108,12 @@ Foam::scalar Foam::inputChecks::getInRange
         rule.precision(10);
         if (upper < GREAT)
         {
-            rule<< "must lie in [" << lower << ", " << upper << "]";
+            rule<< "must lie in " << (lowerOpen ? "(" : "[") << lower << ", "
+                << upper << (upperOpen ? ")" : "]");
         }
         else
         {
-            rule<< "must be >= " << lower;
+            rule<< "must be " << (lowerOpen ? "> " : ">= ") << lower;
         }
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' in " << dict.name() << " "

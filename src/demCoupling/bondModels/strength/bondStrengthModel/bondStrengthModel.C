@@ -36,9 +36,15 @@ Foam::bondStrengthModel::fracture::fracture(const dictionary& dict)
     ),
     brokenFraction_
     (
-        inputChecks::getInRange
+        inputChecks::getInInterval
         (
-            dict, "brokenFraction", dem::BondParameters().brokenFraction, 0, 1
+            dict,
+            "brokenFraction",
+            dem::BondParameters().brokenFraction,
+            0,
+            1,
+            false,
+            true
         )
     )
 {}

@@ -19,12 +19,33 @@ namespace bondStrengthModels
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A required strength >= 0 (0: that mode never fails)
+Foam::scalar nonNegative(const Foam::dictionary& dict, const Foam::word& key)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' not found in " << dict.name()
+            << "; expected '" << key << " <value [Pa], >= 0>;'" << Foam::nl
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return Foam::inputChecks::getInRange(dict, key, 0, 0);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::bondStrengthModels::constantStrength::constantStrength(const dictionary& dict)
 :
-    tensileStrength_(inputChecks::getPositive(dict, "tensileStrength")),
-    shearStrength_(inputChecks::getPositive(dict, "shearStrength")),
+    tensileStrength_(nonNegative(dict, "tensileStrength")),
+    shearStrength_(nonNegative(dict, "shearStrength")),
     fracture_(dict)
 {}
 
