@@ -112,3 +112,44 @@ def test_same_seed_same_file():
     again = open(make("seed_b.txt", *args, "--seed", 3)).read()
     other = open(make("seed_c.txt", *args, "--seed", 5)).read()
     assert first == again and first != other
+
+
+def test_walls_on_x_and_strain_rate_velocities():
+    """--periodic y: 200 capsules between walls at x = 0 and LX keep their
+    caps inside ([0, LX] along x with r + h |a_x|, exactly as along z), and
+    no two touch (x not wrapped: the plain distance of the core segments,
+    sampled as in the test above). --strain-rate: every grain's velocity is
+    E_ii (x_i - o_i) to the 10 significant digits written: within
+    5e-10 (|v_i| + |E_ii| |x_i|), the rounding of both numbers."""
+    lx, ly, lz = 0.012, 0.016, 0.012
+    rate, origin = np.array([-1.0, 0.0, -0.5]), np.array([0.006, 0.0, 0.003])
+    path = make("walls_x.txt", "--box", lx, ly, "--z", 0, lz, "--radius", 4e-4, 6e-4,
+                "--layout", "random", "--count", 200, "--capsule-fraction", 1,
+                "--aspect", 2, 4, "--periodic", "y", "--strain-rate", *rate,
+                "--strain-origin", *origin, "--seed", 3)
+    rows = np.array([[float(c) for c in l.split()] for l in open(path)
+                     if l.strip() and not l.startswith("#")])
+    assert rows.shape[1] == 12
+    x, r, h, q, v = rows[:, :3], rows[:, 3], rows[:, 4], rows[:, 5:9], rows[:, 9:12]
+    a = axes(q) * h[:, None]
+    reach = r[:, None] + np.abs(a)
+    inside_x = np.min(np.minimum(x[:, 0] - reach[:, 0], lx - x[:, 0] - reach[:, 0]))
+    inside_z = np.min(np.minimum(x[:, 2] - reach[:, 2], lz - x[:, 2] - reach[:, 2]))
+    u = np.linspace(-1, 1, 51)
+    samples = x[:, None, :] + u[None, :, None] * a[:, None, :]
+    worst = np.inf
+    for i in range(len(r)):
+        d = samples[i + 1:, :, None, :] - samples[i][None, None, :, :]
+        d[..., 1] -= ly * np.round(d[..., 1] / ly)
+        sampled = np.sqrt(np.min(np.einsum("...k,...k->...", d, d), axis=(1, 2)))
+        lower = sampled - 0.02 * (np.linalg.norm(a[i]) + np.linalg.norm(a[i + 1:], axis=1))
+        if len(lower):
+            worst = min(worst, np.min(lower / (r[i] + r[i + 1:])))
+    bound = 5e-10 * (np.abs(v) + np.abs(rate) * np.abs(x)) + 1e-15
+    error = np.max(np.abs(v - rate * (x - origin)) / bound)
+    print(f"clearance to the x walls {inside_x:.2e} m, to the z walls {inside_z:.2e} m;"
+          f" smallest surface distance bound / (r_i + r_j) = {worst:.3f};"
+          f" velocity error {error:.2f} of its rounding bound")
+    assert inside_x >= 0 and inside_z >= 0
+    assert worst > 1.0
+    assert error <= 1.0

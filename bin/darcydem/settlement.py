@@ -1,0 +1,558 @@
+"""The snow settlement experiment of Johnson and Hopkins (2005, J. Glaciol.
+51(174), 432), its section "DEM simulation of snow creep settlement" and
+Figs 5-10, run through real case directories:
+
+  1. contract  demFoam, no gravity: a loose random gas of capsules
+               (makeGrains --layout random --periodic y) in a box 1.5 x wider
+               (x) and taller (z) than the paper's, every grain moving with a
+               homogeneous contracting strain-rate field (--strain-rate) about
+               the box middle, the four walls closing on it 1/0.9 x faster
+               until they make the paper's box (0.019 x 0.016 x 0.019 m):
+               Cundall and Strack's contraction of space, the walls sweeping
+               the outermost grains onto the rest. Every pair that touches
+               freezes at once (bonds formation frozenOnContact), so the grains
+               end as a bonded, loose skeleton touching every wall;
+  2. relax     the walls stopped, a global viscous drag takes out the
+               contraction's remaining momentum, a light stress-controlled lid
+               closes the gap the skeleton leaves as it springs back; its
+               demState is the sample every settlement run starts from;
+  3. settle    the lid becomes free (0.125 kg), gravity ramps up from zero,
+               one run per contact viscosity nu_s (0.0016, 0.016, 0.16 and
+               1 MPa s), and optionally one with a creep mechanism off.
+
+The measurements come from the function objects wallStress (lid stress
+P_zz, side stress P_xx) and packingStatistics (density, coordination number,
+bond counts, lid motion, bulk viscosity); the figures mirror the paper's
+Figs 6-10. Every stage is a case directory under <study>/stages/<stage>,
+made from the template case in <study>; DARCYDEM_BACKEND=cpu|cuda|auto sets
+the DEM backend (bin/darcydem/case.py). Sizes: SIZES below.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+from darcydem.case import Case
+
+BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The paper's set-up (the text of its settlement section; its Table 1 is lost)
+PAPER_BOX = (0.019, 0.016, 0.019)       # x, y, z [m]
+LID_MASS = 0.125                         # [kg]
+PAPER_VISCOSITIES = (1.6e3, 1.6e4, 1.6e5, 1.0e6)   # contact viscosity nu_s [Pa s]
+ICE_DENSITY = 917.0
+# Load scaled with the stiffness (1e-3): gravity 9.81e-3 m/s^2 under the real lid
+GRAVITY = 9.81e-3
+GRAVITY_RAMP = 0.1                       # [s] from zero to GRAVITY
+TIME_STEP = 1e-5                         # the paper's DEM step [s]
+STEPS_PER_FLUID_STEP = 20
+
+SIZES = {
+    # The paper: 1000 grains in its box, 3 s of settlement per contact viscosity.
+    "paper": dict(count=1000, box=PAPER_BOX, settleTime=3.0, viscosities=PAPER_VISCOSITIES,
+                  strainRate=-1.0, seed=1),
+    # The same sample, a third of the settlement time.
+    "quick": dict(count=1000, box=PAPER_BOX, settleTime=1.0, viscosities=PAPER_VISCOSITIES,
+                  strainRate=-1.0, seed=1),
+    # For the tests: 250 grains in a box a quarter of the paper's (half in x and z).
+    "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.5,
+                 viscosities=(1.6e5, 1.0e6), strainRate=-2.0, seed=2),
+}
+
+# Preparation: grains R in [0.4, 0.6] mm, aspect (length / width) in [2, 4]
+RADIUS = (4e-4, 6e-4)
+ASPECT = (2.0, 4.0)
+CONTRACTION = 1.5      # the loose box is this much wider (x) and taller (z)
+SWEEP = 0.9            # the grains' contraction rate over the walls'
+# strainRate (SIZES): -1 1/s closes neighbours at about 2 mm/s, whose kinetic energy is a
+# few hundred times less than a bond stores at its tensile strength: bonds survive freezing
+RELAX_TIME = 0.1        # [s] with the drag below
+RELAX_LID_MASS = 1e-3   # [kg]: the lid closes a gap of 0.1 mm in about 0.02 s
+RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
+RELAX_DRAG = 3e-4       # [N s/m]: m/c about 5 ms for a grain of 1.6e-6 kg
+PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
+
+# Function objects' output, as written by wallStress and packingStatistics
+WALL_STRESS = "postProcessing/wallStress/0/wallStress.dat"
+PACKING = "postProcessing/packingStatistics/0/packing.dat"
+
+
+def read_columns(path):
+    """{column name: array} of a function object's .dat file whose last
+    comment line names the columns ('# time a b ...')."""
+    names = None
+    rows = []
+    for line in open(path):
+        if line.startswith("#"):
+            names = line[1:].split()
+        elif line.strip():
+            rows.append([float(v) for v in line.split()])
+    if names is None:
+        raise ValueError(f"{path}: no header line naming the columns")
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def hanning_smooth(y, width):
+    """Moving Hanning-window average, ends padded with the end values."""
+    y = np.asarray(y, dtype=float)
+    width = max(3, int(width) | 1)
+    if len(y) < width:
+        return y
+    w = np.hanning(width + 2)[1:-1]
+    w /= w.sum()
+    padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
+    return np.convolve(padded, w, mode="valid")
+
+
+def label(nu):
+    return "%g MPa s" % (nu / 1e6)
+
+
+class Run:
+    """The measurements of one settlement run (the two .dat files)."""
+
+    def __init__(self, case_dir, nu, ly):
+        self.nu = nu
+        self.ly = ly    # the periodic length in y [m]
+        w = read_columns(os.path.join(case_dir, WALL_STRESS))
+        p = read_columns(os.path.join(case_dir, PACKING))
+        n = min(len(w["time"]), len(p["time"]))
+        self.t = p["time"][:n]
+        # compression positive: an upper wall is pushed along +axis, a lower one along -axis
+        self.pzz = w["lid_stress"][:n]
+        self.pxx = 0.5 * (w["right_stress"][:n] - w["left_stress"][:n])
+        self.p = {k: v[:n] for k, v in p.items()}
+        self.w = {k: v[:n] for k, v in w.items()}
+        self.density = self.p["density"]
+        formed0 = self.p["bondsFormed"][0]
+        broken0 = self.p["bondsBroken"][0]
+        self.formed = self.p["bondsFormed"] - formed0    # new frozen bonds since the start
+        self.broken = self.p["bondsBroken"] - broken0
+
+    def creep_rates(self, width=None):
+        """(axial strain rate, bulk viscosity) from the Hanning-smoothed lid
+        height H: strain rate -dH/dt / H, viscosity smoothed P_zz / rate.
+        The packingStatistics columns hold the same from the instantaneous
+        lid velocity, which rings with the lid on its elastic skeleton."""
+        width = width or max(5, len(self.t) // 40)
+        lid = hanning_smooth(self.p["lidPosition"], width)
+        bottom = self.w["bottom_position"]
+        height = lid - bottom
+        rate = -np.gradient(lid, self.t) / height
+        # the smoothing window is cut short at both ends: no rate there
+        rate[:width // 2] = np.nan
+        rate[len(rate) - width // 2:] = np.nan
+        pzz = hanning_smooth(self.pzz, width)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            viscosity = np.where(rate > 0, pzz / rate, np.nan)
+        return rate, viscosity
+
+    def loaded(self):
+        """Rows after the gravity ramp."""
+        return self.t >= GRAVITY_RAMP
+
+    def creeping(self):
+        """Rows from the first time the smoothed lid stress reaches the lid's
+        weight over the area on: the lid has caught up with the sample and
+        sinks as the skeleton creeps (before, it falls onto the sample and
+        P_zz / strain rate is no viscosity)."""
+        area = (self.w["right_position"][0] - self.w["left_position"][0]) * self.ly
+        weight = LID_MASS * GRAVITY / area
+        smooth = hanning_smooth(self.pzz, max(5, len(self.t) // 40))
+        reached = np.flatnonzero(self.loaded() & (smooth >= weight))
+        mask = np.zeros(len(self.t), dtype=bool)
+        if len(reached):
+            mask[reached[0]:] = True
+        return mask
+
+
+class SettlementStudy:
+    def __init__(self, study_dir, size="quick", log=print):
+        if size not in SIZES:
+            sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
+        self.s = dict(SIZES[size])
+        self.size = size
+        self.log = log
+        self.dir = os.path.abspath(study_dir)
+        self.stages = os.path.join(self.dir, "stages")
+        os.makedirs(self.stages, exist_ok=True)
+        lx, ly, lz = self.s["box"]
+        # the loose box, and the mesh around it (the walls bound the grains)
+        self.loose = (lx * CONTRACTION, ly, lz * CONTRACTION)
+        self.results = {"size": size, "settings": dict(self.s), "runs": {}}
+
+    # ---- stages ---------------------------------------------------------------------------
+    def stage(self, name, state_from=None):
+        c = Case(os.path.basename(self.dir), name, template_root=os.path.dirname(self.dir),
+                 run_root=self.stages)
+        block = "system/blockMeshDict"
+        lx, ly, lz = self.loose
+        cell = 3e-3   # about a capsule's length
+        for key, value in (("Lx", lx), ("Ly", ly), ("H", lz)):
+            c.set_variable(block, key, "%.12g" % value)
+        for key, value in (("nx", lx), ("ny", ly), ("nz", lz)):
+            c.set_variable(block, key, max(1, round(value / cell)))
+        os.makedirs(c.file("0"), exist_ok=True)
+        return c.mesh(state_from)
+
+    def final_walls(self):
+        """(left, right, bottom, lid) of the paper's box in the middle of the loose box."""
+        lx, _, lz = self.s["box"]
+        x0 = 0.5 * (self.loose[0] - lx)
+        z0 = 0.5 * (self.loose[2] - lz)
+        return x0, x0 + lx, z0, z0 + lz
+
+    def set_walls(self, c, moving):
+        dem = "constant/demProperties"
+        if moving:
+            # the walls close on the middle of the loose box at the wall strain rate and
+            # reach the paper's box when (1 + rate t) = 1 / CONTRACTION; the grains' field
+            # is SWEEP x slower, so the walls catch the outermost grains and press them onto
+            # the skeleton: it ends touching every wall
+            lx, _, lz = self.loose
+            rate = self.s["strainRate"]
+            for wall, position, middle in (("left", 0.0, lx / 2), ("right", lx, lx / 2),
+                                           ("bottom", 0.0, lz / 2), ("lid", lz, lz / 2)):
+                c.set(dem, f"walls/{wall}/mode", "velocity")
+                c.set(dem, f"walls/{wall}/position", "%.12g" % position)
+                c.set(dem, f"walls/{wall}/velocity", "%.12g" % (rate * (position - middle)))
+            c.remove(dem, "walls/lid/mass")
+        else:
+            for wall, position in zip(("left", "right", "bottom", "lid"), self.final_walls()):
+                c.set(dem, f"walls/{wall}/position", "%.12g" % position)
+
+    def controls(self, c, end, writes, rows=2000):
+        """endTime, write times and the function objects' rows (about `rows`)."""
+        ctl = "system/controlDict"
+        fluid_dt = STEPS_PER_FLUID_STEP * TIME_STEP
+        steps = round(end / fluid_dt)
+        c.set(ctl, "deltaT", "%.12g" % fluid_dt)
+        c.set(ctl, "endTime", "%.12g" % (steps * fluid_dt))
+        c.set(ctl, "writeInterval", max(1, steps // writes))
+        for fo in ("wallStress", "packingStatistics"):
+            c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
+        c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
+
+    def contraction_time(self):
+        return (1 / CONTRACTION - 1) / self.s["strainRate"]
+
+    def prepare(self):
+        s = self.s
+        dem = "constant/demProperties"
+        lx, ly, lz = self.loose
+        a = self.stage("contract")
+        grain_rate = SWEEP * s["strainRate"]
+        subprocess.run([os.path.join(BIN, "makeGrains"), "--box", "%.12g" % lx, "%.12g" % ly,
+                        "--z", "0", "%.12g" % lz, "--radius", str(RADIUS[0]), str(RADIUS[1]),
+                        "--layout", "random", "--count", str(s["count"]),
+                        "--capsule-fraction", "1", "--aspect", str(ASPECT[0]), str(ASPECT[1]),
+                        "--periodic", "y", "--gap", "0.05",
+                        "--strain-rate", str(grain_rate), "0", str(grain_rate),
+                        "--strain-origin", "%.12g" % (lx / 2), "0", "%.12g" % (lz / 2),
+                        "--seed", str(s["seed"]), "-o", a.file("0/grains")],
+                       check=True, stdout=subprocess.DEVNULL)
+        self.set_walls(a, moving=True)
+        a.set(dem, "gravity", "(0 0 0)")
+        a.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
+        self.controls(a, self.contraction_time(), 4, rows=400)
+        self.log(f"settlementStudy: contract {s['count']} capsules by {CONTRACTION} in x and z"
+                 f" ({self.contraction_time():.3g} s)")
+        self.timed_run(a, "contract")
+
+        b = self.stage("relax", state_from=self.last_state(a))
+        self.set_walls(b, moving=False)
+        # the skeleton springs back from the lid when the walls stop: a light lid
+        # pressing at a quarter of the real lid's stress closes that gap (the free lid
+        # of the settlement would fall through it)
+        lid_stress = LID_MASS * GRAVITY / (s["box"][0] * s["box"][1])
+        b.set(dem, "walls/lid/mode", "stress")
+        b.set(dem, "walls/lid/mass", RELAX_LID_MASS)
+        b.set(dem, "walls/lid/normalStress", "%.12g" % (RELAX_LID_STRESS * lid_stress))
+        b.set(dem, "gravity", "(0 0 0)")
+        b.set(dem, "viscousDrag", RELAX_DRAG)
+        b.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
+        self.controls(b, RELAX_TIME, 1, rows=100)
+        self.log(f"settlementStudy: relax ({RELAX_TIME} s, drag {RELAX_DRAG} N s/m)")
+        self.timed_run(b, "relax")
+        self.prepared = self.last_state(b)
+        start = read_columns(b.file(PACKING))
+        self.results["prepare"] = {k: float(start[k][-1]) for k in
+                                   ("density", "solidFraction", "coordinationNumber",
+                                    "bondsIntact", "meanPatchRadius")}
+
+    @staticmethod
+    def last_state(case):
+        return case.file(os.path.join(case.times()[-1][1], "demState"))
+
+    def timed_run(self, case, name):
+        t0 = time.time()
+        case.run("demFoam")
+        seconds = time.time() - t0
+        self.results.setdefault("wallSeconds", {})[name] = seconds
+        self.log(f"settlementStudy: {name} took {seconds:.0f} s")
+        return seconds
+
+    def settle(self, nu, creep_off=None):
+        """One settlement run; creep_off: the creep mechanism (shear, twist,
+        bend) switched off in it."""
+        name = "settle_nu%g" % nu + ("" if creep_off is None else "_no" + creep_off.title())
+        c = self.stage(name, state_from=self.prepared)
+        self.set_walls(c, moving=False)
+        c.set("constant/demProperties", "bonds/creep/contactViscosity", "%g" % nu)
+        if creep_off is not None:
+            c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
+        self.controls(c, self.s["settleTime"], 4)
+        self.log(f"settlementStudy: settle, contact viscosity {label(nu)}"
+                 f" ({self.s['settleTime']} s)"
+                 + ("" if creep_off is None else f", {creep_off} creep off"))
+        seconds = self.timed_run(c, name)
+        steps = round(self.s["settleTime"] / TIME_STEP)
+        run = Run(c.path, nu, self.s["box"][1])
+        run.creep_off = creep_off
+        rate, viscosity = run.creep_rates()
+        loaded = run.loaded()
+        self.results["runs"][name] = {
+            "contactViscosity": nu,
+            "grainStepsPerSecond": self.s["count"] * steps / seconds,
+            "densityStart": float(run.density[0]),
+            "densityEnd": float(run.density[-1]),
+            "coordinationEnd": float(run.p["coordinationNumber"][-1]),
+            "bondsFormed": float(run.formed[-1]),
+            "bondsBroken": float(run.broken[-1]),
+            "meanPzzLoaded": float(np.mean(run.pzz[loaded])),
+            "meanPxxLoaded": float(np.mean(run.pxx[loaded])),
+            "meanStrainRateLoaded": float(np.nanmean(rate[loaded])),
+        }
+        return run
+
+    def run(self, creep_off=(), keep_sample=False):
+        """The preparation (unless keep_sample and stages/relax has run), the
+        settlement runs, and one more run at the lowest contact viscosity for
+        each mechanism in creep_off, with that creep mechanism off."""
+        relax = os.path.join(self.stages, "relax")
+        if keep_sample and os.path.exists(relax) and Case.existing(relax).times():
+            self.prepared = self.last_state(Case.existing(relax))
+            self.log(f"settlementStudy: the sample of {relax}")
+        else:
+            self.prepare()
+        runs = [self.settle(nu) for nu in self.s["viscosities"]]
+        variants = [self.settle(min(self.s["viscosities"]), m) for m in creep_off]
+        self.results["lidStressExpected"] = LID_MASS * GRAVITY / (
+            self.s["box"][0] * self.s["box"][1])
+        self.plot(runs)
+        if variants:
+            plot_creep_off(runs[int(np.argmin([r.nu for r in runs]))], variants, self.dir)
+        self.write_results()
+        return runs
+
+    def existing_runs(self):
+        """The settlement runs already in stages/ (for --plot-only)."""
+        runs = []
+        for nu in self.s["viscosities"]:
+            path = os.path.join(self.stages, "settle_nu%g" % nu)
+            if os.path.exists(os.path.join(path, PACKING)):
+                runs.append(Run(path, nu, self.s["box"][1]))
+        return runs
+
+    def write_results(self):
+        with open(os.path.join(self.dir, "results.json"), "w") as f:
+            json.dump(self.results, f, indent=2)
+
+    # ---- figures --------------------------------------------------------------------------
+    def plot(self, runs):
+        plot_figures(runs, self.dir, self.s["box"], self.results)
+
+
+def reference_density(runs, wanted=300.0):
+    """A density every run passes through while creeping: `wanted` (the
+    paper's Fig. 10 uses 300 kg/m^3) when all reach it, else the middle of
+    the range all share (None when they share none)."""
+    spans = [r.density[r.creeping()] for r in runs]
+    if any(len(d) == 0 for d in spans):
+        return None
+    reached = min(np.max(d) for d in spans)
+    start = max(np.min(d) for d in spans)
+    if start > reached:
+        return None
+    return wanted if start <= wanted <= reached else 0.5 * (start + reached)
+
+
+def viscosity_at(run, density):
+    """Bulk viscosity of a run at a density: the median over the creeping
+    rows within 0.5 % of it (the smoothed viscosity still scatters)."""
+    _, viscosity = run.creep_rates()
+    rows = run.creeping() & (np.abs(run.density - density) <= 0.005 * density)
+    values = viscosity[rows]
+    values = values[np.isfinite(values)]
+    return float(np.median(values)) if len(values) else float("nan")
+
+
+def plot_figures(runs, out_dir, box, results=None):
+    """settlementTime.png (Fig. 6), settlementDensity.png (Fig. 7),
+    settlementCreep.png (Fig. 8d), settlementViscosity.png (Fig. 9),
+    settlementScaling.png (Fig. 10) in out_dir."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    results = {} if results is None else results
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    lid_stress = LID_MASS * GRAVITY / (box[0] * box[1])
+
+    def save(fig, name):
+        fig.tight_layout()
+        fig.savefig(os.path.join(out_dir, name), dpi=110)
+        plt.close(fig)
+
+    # Fig. 6: against time
+    fig, ax = plt.subplots(5, 1, figsize=(6.5, 12), sharex=True)
+    for k, r in enumerate(runs):
+        c = colours[k % len(colours)]
+        ax[0].plot(r.t, r.pzz, color=c, lw=0.8, label="P_zz, " + label(r.nu))
+        ax[0].plot(r.t, r.pxx, color=c, lw=0.8, ls="--")
+        ax[1].plot(r.t, r.density, color=c, label=label(r.nu))
+        ax[2].plot(r.t, r.p["coordinationNumber"], color=c)
+        ax[3].plot(r.t, r.broken, color=c)
+        ax[4].plot(r.t, r.formed, color=c)
+    ax[0].axhline(lid_stress, color="k", lw=0.6, ls=":", label="lid weight / area")
+    ax[0].set_ylabel("(a) P_zz (solid), P_xx (dashed) [Pa]")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("(b) density [kg/m³]")
+    ax[2].set_ylabel("(c) coordination number")
+    ax[3].set_ylabel("(d) broken bonds")
+    ax[4].set_ylabel("(e) new frozen bonds")
+    ax[4].set_xlabel("time [s]")
+    save(fig, "settlementTime.png")
+
+    # Fig. 7: against density (after the gravity ramp)
+    fig, ax = plt.subplots(2, 2, figsize=(10, 7))
+    ax = ax.ravel()
+    for k, r in enumerate(runs):
+        c = colours[k % len(colours)]
+        m = r.loaded()
+        ax[0].plot(r.density[m], r.pzz[m], color=c, lw=0.8, label="P_zz, " + label(r.nu))
+        ax[0].plot(r.density[m], r.pxx[m], color=c, lw=0.8, ls="--")
+        ax[1].plot(r.density[m], r.p["coordinationNumber"][m], color=c, label=label(r.nu))
+        ax[2].plot(r.density[m], r.formed[m], color=c)
+        ax[3].plot(r.density[m], r.broken[m], color=c)
+    ax[0].set_ylabel("(a) P_zz (solid), P_xx (dashed) [Pa]")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("(b) coordination number")
+    ax[1].legend(fontsize=7)
+    ax[2].set_ylabel("(c) new frozen bonds")
+    ax[3].set_ylabel("(d) broken bonds")
+    for a in ax:
+        a.set_xlabel("density [kg/m³]")
+    save(fig, "settlementDensity.png")
+
+    # Fig. 8 (d): bulk axial strain rate against density (the whole loaded run)
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    for k, r in enumerate(runs):
+        rate, _ = r.creep_rates()
+        m = r.loaded()
+        ax.semilogy(r.density[m], np.where(rate[m] > 0, rate[m], np.nan),
+                    color=colours[k % len(colours)], label=label(r.nu))
+    ax.set_xlabel("density [kg/m³]")
+    ax.set_ylabel("bulk axial strain rate [1/s]")
+    ax.legend(fontsize=7)
+    save(fig, "settlementCreep.png")
+
+    # Fig. 9: bulk viscosity against density, once the lid rests on the creeping sample
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for k, r in enumerate(runs):
+        _, viscosity = r.creep_rates()
+        m = r.creeping()
+        ax.semilogy(r.density[m], viscosity[m], color=colours[k % len(colours)],
+                    label=label(r.nu))
+    ax.set_xlabel("density [kg/m³]")
+    ax.set_ylabel("bulk viscosity P_zz / strain rate [Pa s]")
+    ax.legend(fontsize=7)
+    save(fig, "settlementViscosity.png")
+
+    # Fig. 10: bulk viscosity at one density against contact viscosity. Where the runs
+    # share no density while creeping (the fast ones have compacted before their lid
+    # rests on them), each run's viscosity where it starts creeping, densities noted.
+    if len(runs) >= 2:
+        rho = reference_density(runs)
+        nu = np.array([r.nu for r in runs])
+        if rho is not None:
+            at = np.full(len(runs), rho)
+        else:
+            at = np.array([r.density[r.creeping()][0] if r.creeping().any() else np.nan
+                           for r in runs])
+        eta = np.array([viscosity_at(r, d) if np.isfinite(d) else np.nan
+                        for r, d in zip(runs, at)])
+        ok = np.isfinite(eta) & (eta > 0)
+        fig, ax = plt.subplots(figsize=(5.5, 4.5))
+        ax.loglog(nu[ok], eta[ok], "o", label=(f"at {rho:.0f} kg/m³" if rho is not None else
+                                                "where each run starts creeping"))
+        for n, e, d in zip(nu[ok], eta[ok], at[ok]):
+            ax.annotate(f"{d:.0f} kg/m³", (n, e), fontsize=7, xytext=(4, -10),
+                        textcoords="offset points")
+        if np.count_nonzero(ok) >= 2:
+            slope, intercept = np.polyfit(np.log10(nu[ok]), np.log10(eta[ok]), 1)
+            fit = 10 ** (intercept + slope * np.log10(nu[ok]))
+            ax.loglog(nu[ok], fit, "k--", lw=0.8, label=f"fit: slope {slope:.2f}")
+            results["scaling"] = {"density": at.tolist(), "contactViscosity": nu.tolist(),
+                                  "bulkViscosity": eta.tolist(), "logSlope": slope}
+        ax.set_xlabel("contact viscosity ν_s [Pa s]")
+        ax.set_ylabel("bulk viscosity [Pa s]")
+        ax.legend(fontsize=7)
+        save(fig, "settlementScaling.png")
+
+
+def plot_creep_off(reference, variants, out_dir):
+    """settlementCreepOff.png: lid stress, density and broken bonds against
+    time with every creep mechanism on and with one off."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(3, 1, figsize=(6.5, 8), sharex=True)
+    for r in [reference] + list(variants):
+        name = "all creep on" if getattr(r, "creep_off", None) is None else (
+            f"{r.creep_off} creep off")
+        ax[0].plot(r.t, r.pzz, lw=0.8, label=f"{name}, {label(r.nu)}")
+        ax[1].plot(r.t, r.density)
+        ax[2].plot(r.t, r.broken)
+    ax[0].set_ylabel("P_zz [Pa]")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("density [kg/m³]")
+    ax[2].set_ylabel("broken bonds")
+    ax[2].set_xlabel("time [s]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "settlementCreepOff.png"), dpi=110)
+    plt.close(fig)
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(prog="settlementStudy", description=__doc__.split("\n")[0])
+    ap.add_argument("study_dir")
+    ap.add_argument("--size", default="quick", choices=sorted(SIZES))
+    ap.add_argument("--paper", action="store_true", help="the same as --size paper")
+    ap.add_argument("--plot-only", action="store_true",
+                    help="redraw the figures from the runs already in stages/")
+    ap.add_argument("--creep-off", action="append", default=[],
+                    choices=("shear", "twist", "bend"),
+                    help="one more run at the lowest contact viscosity with this creep"
+                         " mechanism off (may be repeated)")
+    ap.add_argument("--keep-sample", action="store_true",
+                    help="start from the sample already in stages/relax")
+    a = ap.parse_args(argv)
+    study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
+                            log=lambda m: print(m, flush=True))
+    if a.plot_only:
+        # keep what the runs recorded (preparation, timings); the figures' numbers update
+        previous = os.path.join(study.dir, "results.json")
+        if os.path.exists(previous):
+            study.results = json.load(open(previous))
+        study.plot(study.existing_runs())
+        study.write_results()
+        return
+    study.run(creep_off=a.creep_off, keep_sample=a.keep_sample)
