@@ -106,9 +106,14 @@ void EngineImpl<Exec>::rebuild()
 
     // Half list (owner < partner): count, scan, fill.
     pairs_.swap(oldPairs_);
-    const NeighbourSearch search{
-        grains_.vec3(fPosition), grains_.real(fRadius), halfLengths(), box, cells,
-        params_.neighbourSkin};
+    const NeighbourSearch search{grains_.vec3(fPosition),
+                                 grains_.real(fRadius),
+                                 halfLengths(),
+                                 box,
+                                 cells,
+                                 params_.neighbourSkin,
+                                 grains_.real(fOrientation),
+                                 n};
     counts_.resize(n + 1);
     int* counts = thrust::raw_pointer_cast(counts_.data());
     counts_[n] = 0;
