@@ -8,13 +8,18 @@
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::inputChecks::getPositive
+namespace
+{
+
+//- value if it is > 0, else a FatalIOError naming the entry
+Foam::scalar positiveOrStop
 (
-    const dictionary& dict,
-    const word& key
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar value
 )
 {
-    const scalar value = dict.get<scalar>(key);
+    using namespace Foam;
 
     if (!(value > 0))
     {
@@ -25,6 +30,18 @@ Foam::scalar Foam::inputChecks::getPositive
     }
 
     return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::scalar Foam::inputChecks::getPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    return positiveOrStop(dict, key, dict.get<scalar>(key));
 }
 
 
@@ -58,17 +75,12 @@ Foam::scalar Foam::inputChecks::getPositiveOrDefault
     const scalar defaultValue
 )
 {
-    const scalar value = dict.getOrDefault<scalar>(key, defaultValue);
-
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' in " << dict.name()
-            << " must be > 0, found " << value << nl
-            << exit(FatalIOError);
-    }
-
-    return value;
+    return positiveOrStop
+    (
+        dict,
+        key,
+        dict.getOrDefault<scalar>(key, defaultValue)
+    );
 }
 
 
