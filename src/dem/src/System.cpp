@@ -384,9 +384,16 @@ void System::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
     impl_->engine->deposit(grid, dtFluid, porosity, predictedPorosity, meanVelocity, solidVolume);
 }
 
-void System::setFluid(const UniformGrid& grid, const double* gradP, double fluidDensity)
+void System::setFluid(const UniformGrid& grid, const FluidFields& fluid)
 {
-    impl_->engine->setFluid(grid, gradP, fluidDensity);
+    impl_->engine->setFluid(grid, fluid);
+}
+
+void System::depositFluidReaction(const UniformGrid& grid, double* reaction) const
+{
+    if (!reaction)
+        throw Error("depositFluidReaction: reaction is null");
+    impl_->engine->depositFluidReaction(grid, reaction);
 }
 
 void System::clearFluid()

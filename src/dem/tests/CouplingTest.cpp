@@ -3,7 +3,11 @@
 //  - deposited solid volume equals sum V_g to round-off, in a periodic box and next to walls;
 //  - a rigidly translating packing deposits exactly its velocity;
 //  - the predicted porosity equals the porosity of the grains moved by v dt_f;
-//  - a uniform grad p gives f = -V grad p - rho_f V g on every grain;
+//  - a uniform force density f = -grad p gives F = -V grad p - rho_f V g on every grain;
+//  - drag: a uniform beta and u give F = V beta (u - v), and a lone grain relaxes to u as
+//    exp(-beta t/rho_s) (the exact solution of m dv/dt = V beta (u - v));
+//  - the grains' reaction deposited on the cells sums to minus their fluid forces (momentum
+//    conservation), next to walls and across periodic sides;
 //  - the same with capsules mixed among the spheres (their true volume pi r^2 L + 4/3 pi r^3,
 //    spread along the axis: kernels/VolumeSpread.h, its error in VolumeSpreadTest.cpp).
 #include "TestSupport.h"
@@ -248,8 +252,11 @@ TEST_P(Coupling, UniformPressureGradientAndBuoyancy)
         std::vector<double> field(3 * g.cellCount());
         for (std::size_t c = 0; c < g.cellCount(); ++c)
             for (int d = 0; d < 3; ++d)
-                field[3 * c + d] = gradP[d];
-        s.setFluid(g, field.data(), rhoFluid);
+                field[3 * c + d] = -gradP[d];
+        dem::FluidFields fluid;
+        fluid.forceDensity = field.data();
+        fluid.buoyancyDensity = rhoFluid;
+        s.setFluid(g, fluid);
         s.step(1);
         const dem::GrainData out = s.grains();
         double worst = 0, worstReadBack = 0;
@@ -274,6 +281,108 @@ TEST_P(Coupling, UniformPressureGradientAndBuoyancy)
         s.clearFluid();
         s.step(1);
         EXPECT_NEAR(s.grains().force[2], out.mass[0] * p.gravity[2], 1e-12);
+    }
+}
+
+TEST_P(Coupling, DragRelaxesAGrainToTheFluidVelocity)
+{
+    // One sphere, no gravity, in a uniform flow u with drag coefficient beta per unit grain
+    // volume: m dv/dt = V beta (u - v), so v(t) = u + (v0 - u) exp(-beta t/rho_s). The step
+    // (Verlet, drag at the packed velocity) is first order in dt beta/rho_s; with
+    // beta dt/rho_s = 1e-3 the error after one relaxation time is below 1e-3 of |v0 - u|.
+    dem::Parameters p = parameters();
+    p.boxUpper = {box, box};
+    p.gravity = {0, 0, 0};
+    dem::System s(p);
+    dem::GrainInit grain;
+    grain.position = {0.1, 0.1, 0.07};
+    grain.radius = 0.005;
+    grain.density = 2600;
+    grain.velocity = {0, 0, 0};
+    s.addGrain(grain);
+    const dem::UniformGrid g = grid();
+    const Vec3 u = {0.02, -0.01, 0.005};
+    const double beta = 1e-3 * grain.density / p.timeStep; // beta dt/rho_s = 1e-3
+    std::vector<double> force(3 * g.cellCount(), 0.0), drag(g.cellCount(), beta),
+        velocity(3 * g.cellCount());
+    for (std::size_t c = 0; c < g.cellCount(); ++c)
+        for (int d = 0; d < 3; ++d)
+            velocity[3 * c + d] = u[d];
+    dem::FluidFields fluid;
+    fluid.forceDensity = force.data();
+    fluid.dragCoefficient = drag.data();
+    fluid.velocity = velocity.data();
+    s.setFluid(g, fluid);
+    const int steps = 1000; // one relaxation time rho_s/beta
+    s.step(steps);
+    const dem::GrainData out = s.grains();
+    const double decay = std::exp(-beta * steps * p.timeStep / grain.density);
+    double worst = 0;
+    for (int d = 0; d < 3; ++d)
+        worst = std::max(worst, std::fabs(out.velocity[d] - u[d] * (1.0 - decay)));
+    const double speed = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    std::printf("  drag: |v - v_exact| = %.2e of |u| after one relaxation time\n", worst / speed);
+    EXPECT_LT(worst, 1e-3 * speed);
+    // The read-back is the force of the next step: V beta (u - v)
+    const double volume = 4.0 / 3.0 * M_PI * grain.radius * grain.radius * grain.radius;
+    for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(out.fluidForce[d], volume * beta * (u[d] - out.velocity[d]),
+                    1e-12 * volume * beta * speed);
+}
+
+TEST_P(Coupling, ReactionConservesMomentum)
+{
+    // Grains anywhere (at the walls, across the periodic sides), capsules among them, in a
+    // non-uniform force density with drag: sum_c reaction_c V_cell = -sum_g F_g.
+    dem::Parameters p = parameters();
+    p.boxUpper = {box, box};
+    p.gravity = {0, 0, -9.81};
+    for (bool capsules : {false, true})
+    {
+        dem::System s(p);
+        s.addGrains(grains(60, 0.0, height, {0.01, 0.0, -0.02}, capsules));
+        const dem::UniformGrid g = grid();
+        std::vector<double> force(3 * g.cellCount()), drag(g.cellCount()),
+            velocity(3 * g.cellCount());
+        for (std::size_t c = 0; c < g.cellCount(); ++c)
+        {
+            drag[c] = 1e4 * (1.0 + 0.1 * double(c % 7));
+            for (int d = 0; d < 3; ++d)
+            {
+                force[3 * c + d] = 1e3 * std::sin(0.7 * double(c) + d);
+                velocity[3 * c + d] = 0.01 * std::cos(0.3 * double(c) - d);
+            }
+        }
+        dem::FluidFields fluid;
+        fluid.forceDensity = force.data();
+        fluid.dragCoefficient = drag.data();
+        fluid.velocity = velocity.data();
+        fluid.buoyancyDensity = 1000.0;
+        s.setFluid(g, fluid);
+        std::vector<double> reaction(3 * g.cellCount());
+        s.depositFluidReaction(g, reaction.data());
+        const dem::GrainData out = s.grains();
+        double worst = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            double onGrains = 0, onCells = 0, scale = 0;
+            for (std::size_t i = 0; i < out.radius.size(); ++i)
+            {
+                onGrains += out.fluidForce[3 * i + d];
+                scale += std::fabs(out.fluidForce[3 * i + d]);
+            }
+            for (std::size_t c = 0; c < g.cellCount(); ++c)
+                onCells += reaction[3 * c + d] * g.cellVolume();
+            worst = std::max(worst, std::fabs(onGrains + onCells) / scale);
+        }
+        std::printf("  %s: |sum reaction V_cell + sum F| = %.2e of sum |F|\n",
+                    capsules ? "spheres and capsules" : "spheres", worst);
+        // Round-off of sums of 60 grains x 8 cells: 1e-12
+        EXPECT_LT(worst, 1e-12);
+        s.clearFluid();
+        s.depositFluidReaction(g, reaction.data());
+        EXPECT_EQ(*std::max_element(reaction.begin(), reaction.end()), 0.0);
+        EXPECT_EQ(*std::min_element(reaction.begin(), reaction.end()), 0.0);
     }
 }
 

@@ -242,18 +242,31 @@ void Foam::demCloud::deposit
 }
 
 
-void Foam::demCloud::setPressureGradient
+void Foam::demCloud::setFluidForce
 (
-    const volVectorField& gradp,
+    const volVectorField& forceDensity,
     const scalar rhoFluid
 )
 {
-    std::vector<double> g;
-    grid_.toGrid(gradp.primitiveField(), g);
+    std::vector<double> f;
+    grid_.toGrid(forceDensity.primitiveField(), f);
+    dem::FluidFields fluid;
+    fluid.forceDensity = f.data();
+    fluid.buoyancyDensity = rhoFluid;
     demLibraryCall
     (
-        "handing the pressure gradient to the grains",
-        [&]{ system_->setFluid(grid_.grid(), g.data(), rhoFluid); }
+        "handing the fluid force to the grains",
+        [&]{ system_->setFluid(grid_.grid(), fluid); }
+    );
+}
+
+
+void Foam::demCloud::clearFluidForce()
+{
+    demLibraryCall
+    (
+        "clearing the fluid force on the grains",
+        [&]{ system_->clearFluid(); }
     );
 }
 

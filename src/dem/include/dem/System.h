@@ -6,7 +6,7 @@
 // Typical use:
 //     dem::System dem(params);
 //     dem.addGrains(grains); dem.addWall(bottom); dem.addWall(top);
-//     dem.setFluid(grid, gradP, rhoF);      // force -V grad p - rho_f V g on every grain
+//     dem.setFluid(grid, fluid);            // V (f + beta (u - v) - rho_f g) on every grain
 //     dem.step(nSub);
 //     dem.deposit(grid, dtFluid, porosity, predictedPorosity, meanVelocity);
 #pragma once
@@ -114,11 +114,18 @@ public:
     void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                  double* predictedPorosity, double* meanVelocity,
                  double* solidVolume = nullptr) const;
-    //- From now on every step adds f = -V_g grad p(x) - rho_f V_g g to each grain, grad p
-    //- (3 per cell interleaved) interpolated with the deposit's weights. Copied; call again
-    //- after every pressure solution.
-    void setFluid(const UniformGrid& grid, const double* gradP, double fluidDensity);
+    //- From now on every step adds F = V_g (f(x) + beta(x) (u(x) - v) - rho_f g) to each grain
+    //- (FluidFields), the cell fields interpolated with the deposit's weights. The fields are
+    //- copied; call again after every fluid solution.
+    void setFluid(const UniformGrid& grid, const FluidFields& fluid);
     void clearFluid();
+    //- The grains' reaction on the fluid: per cell of `grid` (3 per cell interleaved) minus
+    //- the sum of the fluid forces F on the grains (as the next step would apply them, at the
+    //- current positions and velocities), each spread with the same trilinear weights that
+    //- interpolate the fields to it, divided by the cell volume [N/m^3]. Momentum is
+    //- conserved: sum over cells of reaction V_cell = -sum over grains of F. Zero without a
+    //- fluid.
+    void depositFluidReaction(const UniformGrid& grid, double* reaction) const;
 
     // ---- restart ------------------------------------------------------------------------
     //- Complete state; importing it into a System built with the same Parameters and walls

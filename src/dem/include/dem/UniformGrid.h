@@ -24,4 +24,23 @@ struct UniformGrid
     double cellVolume() const { return spacing[0] * spacing[1] * spacing[2]; }
 };
 
+//- The fluid's load on the grains, per cell of a UniformGrid (doc/EQUATIONS.md 7). Every step
+//- a grain of solid volume V at x with velocity v feels
+//-     F = V (f(x) + beta(x) (u(x) - v) - rho_f g),
+//- the cell fields interpolated at its centre with the deposit's trilinear weights. The fluid
+//- solver's force model decides what f and beta are: f = -grad p (Damsgaard et al. 2015,
+//- eq. 12), f = -grad p/(1 - phi) (Darcy flow with Terzaghi's effective stress), or a drag law
+//- with beta and u (Navier-Stokes). The library applies the sum; it holds no formula of its own.
+struct FluidFields
+{
+    //- f: force per unit grain volume [N/m^3], 3 per cell interleaved (required)
+    const double* forceDensity = nullptr;
+    //- beta: drag coefficient per unit grain volume [kg/(m^3 s)], 1 per cell; nullptr: no drag
+    const double* dragCoefficient = nullptr;
+    //- u: fluid velocity [m/s], 3 per cell interleaved (required with dragCoefficient)
+    const double* velocity = nullptr;
+    //- rho_f [kg/m^3]: buoyancy -rho_f V g (g the gravity of the step)
+    double buoyancyDensity = 0.0;
+};
+
 } // namespace dem

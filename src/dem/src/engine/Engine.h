@@ -75,8 +75,9 @@ public:
     virtual void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                          double* predictedPorosity, double* meanVelocity,
                          double* solidVolume) const = 0;
-    virtual void setFluid(const UniformGrid& grid, const double* gradP, double density) = 0;
+    virtual void setFluid(const UniformGrid& grid, const FluidFields& fluid) = 0;
     virtual void clearFluid() = 0;
+    virtual void depositFluidReaction(const UniformGrid& grid, double* reaction) const = 0;
 
     virtual SystemState exportState() const = 0;
     virtual void importState(const SystemState& state) = 0;

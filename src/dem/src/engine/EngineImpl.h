@@ -171,8 +171,11 @@ public:
     void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                  double* predictedPorosity, double* meanVelocity,
                  double* solidVolume) const override;
-    void setFluid(const UniformGrid& grid, const double* gradP, double density) override;
+    void setFluid(const UniformGrid& grid, const FluidFields& fluid) override;
     void clearFluid() override { fluid_.active = false; }
+    void depositFluidReaction(const UniformGrid& grid, double* reaction) const override;
+    //- Points a copy of fluid_ at the fields setFluid copied (kernels get raw pointers).
+    void pointFluidAt(FluidView& fluid) const;
 
     SystemState exportState() const override;
     void importState(const SystemState& state) override;
@@ -291,7 +294,7 @@ private:
                                 {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
                                 params_.viscousDrag,
                                 fluid_};
-                            grainLoads.fluid.gradP = thrust::raw_pointer_cast(fluidGradP_.data());
+                            pointFluidAt(grainLoads.fluid);
                             const BondGather bonds =
                                 Shapes::kBonds ? bonds_.gather() : BondGather{};
                             moved2 = exec_.maxOf(grains_.size(),
@@ -504,10 +507,13 @@ private:
     std::size_t bondsFormed_ = 0, bondsBroken_ = 0; //!< since the System was built
     std::vector<WallState> walls_;
     Vec<int> cellKey_, order_, cellStart_, counts_;
-    Vec<double> fluidGradP_;
+    //- FluidFields as copied by setFluid: f (3 per cell), beta (1 per cell, empty: no drag),
+    //- u (3 per cell)
+    Vec<double> fluidForceDensity_, fluidDrag_, fluidVelocity_;
     //- Scratch of the read-back and coupling calls (deposit each fluid step, grains() at each
     //- diagnostics write): kept, so those calls allocate no device memory once sized.
-    mutable Vec<double> depositSolid_, depositMomentum_, depositPorosity_, fluidForceScratch_;
+    mutable Vec<double> depositSolid_, depositMomentum_, depositPorosity_, fluidForceScratch_,
+        reactionScratch_;
     mutable Vec<double> overlapScratch_, depthScratch_;
     mutable Vec<int> contactScratch_;
     FluidView fluid_;

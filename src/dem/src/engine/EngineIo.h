@@ -238,9 +238,10 @@ GrainData EngineImpl<Exec>::grains() const
         fluidForce.resize(3 * std::size_t(n));
         EngineImpl& e = self();
         FluidView fluid = fluid_;
-        fluid.gradP = thrust::raw_pointer_cast(e.fluidGradP_.data());
+        pointFluidAt(fluid);
         Exec::forEach(
             n, FluidForceOnGrains{e.grains_.vec3(fPosition),
+                                  e.grains_.vec3(fVelocity),
                                   e.grains_.real(fRadius),
                                   e.grains_.real(fCoreHalfLength),
                                   fluid,
@@ -386,16 +387,67 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
 }
 
 template <class Exec>
-void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const double* gradP, double density)
+void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const FluidFields& fluid)
 {
-    fluid_.grid = gridView(grid, "setFluid");
-    if (!gradP)
-        throw Error("setFluid: gradP is null");
-    const long values = 3 * fluid_.grid.cellCount();
-    fluidGradP_.resize(values);
-    thrust::copy(gradP, gradP + values, fluidGradP_.begin());
-    fluid_.density = density;
+    const GridView g = gridView(grid, "setFluid");
+    if (!fluid.forceDensity)
+        throw Error("setFluid: forceDensity is null");
+    if (fluid.dragCoefficient && !fluid.velocity)
+        throw Error("setFluid: a dragCoefficient needs the fluid velocity");
+    const long cells = g.cellCount();
+    fluidForceDensity_.resize(3 * cells);
+    thrust::copy(fluid.forceDensity, fluid.forceDensity + 3 * cells, fluidForceDensity_.begin());
+    if (fluid.dragCoefficient)
+    {
+        fluidDrag_.resize(cells);
+        thrust::copy(fluid.dragCoefficient, fluid.dragCoefficient + cells, fluidDrag_.begin());
+        fluidVelocity_.resize(3 * cells);
+        thrust::copy(fluid.velocity, fluid.velocity + 3 * cells, fluidVelocity_.begin());
+    }
+    else
+    {
+        fluidDrag_.clear();
+        fluidVelocity_.clear();
+    }
+    fluid_.grid = g;
+    fluid_.density = fluid.buoyancyDensity;
     fluid_.active = true;
+}
+
+template <class Exec>
+void EngineImpl<Exec>::pointFluidAt(FluidView& fluid) const
+{
+    fluid.forceDensity = thrust::raw_pointer_cast(fluidForceDensity_.data());
+    const bool drag = !fluidDrag_.empty();
+    fluid.dragCoefficient = drag ? thrust::raw_pointer_cast(fluidDrag_.data()) : nullptr;
+    fluid.velocity = drag ? thrust::raw_pointer_cast(fluidVelocity_.data()) : nullptr;
+}
+
+template <class Exec>
+void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* reaction) const
+{
+    const GridView g = gridView(grid, "depositFluidReaction");
+    const long values = 3 * g.cellCount();
+    Vec<double>& out = reactionScratch_;
+    out.resize(values);
+    thrust::fill(exec_.policy(), out.begin(), out.end(), 0.0);
+    if (fluid_.active)
+    {
+        EngineImpl& e = self();
+        FluidView fluid = fluid_;
+        pointFluidAt(fluid);
+        Exec::forEachScatter(
+            grains_.size(),
+            DepositFluidReaction{e.grains_.vec3(fPosition),
+                                 e.grains_.vec3(fVelocity),
+                                 e.grains_.real(fRadius),
+                                 grains_.hasCapsules() ? e.grains_.real(fCoreHalfLength) : nullptr,
+                                 fluid,
+                                 {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+                                 g,
+                                 thrust::raw_pointer_cast(out.data())});
+    }
+    thrust::copy(out.begin(), out.end(), reaction);
 }
 
 } // namespace detail

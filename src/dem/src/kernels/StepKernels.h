@@ -9,6 +9,7 @@
 
 #include "kernels/CapsuleGeometry.h"
 #include "kernels/ContactPair.h"
+#include "kernels/FluidKernels.h"
 #include "kernels/IntegrationKernels.h"
 #include "kernels/LinearSpringContact.h"
 #include "kernels/RigidBody.h"
@@ -24,43 +25,6 @@ namespace detail
 {
 inline namespace DEM_KERNEL_NS
 {
-
-//- The pore fluid's force on a grain of solid volume V (grainVolume: a capsule's true volume)
-//- (Damsgaard et al. 2015, eq. 12): f = -V grad p(x) - rho_f V g, grad p interpolated at the
-//- centre x with the deposit's trilinear weights. It acts at the centre: no torque, also for a
-//- capsule in a gradient that varies along its axis (doc/EQUATIONS.md 7).
-struct FluidView
-{
-    bool active = false;
-    GridView grid;
-    const double* gradP = nullptr; //!< 3 per cell interleaved
-    double density = 0;
-
-    DEM_HD Vector3d force(const Vector3d& x, double volume, const Vector3d& gvec) const
-    {
-        if (!active)
-            return Vector3d::Zero();
-        return -volume * (interpolateVector(grid, gradP, x) + density * gvec);
-    }
-};
-
-//- Read-back of the fluid force on every grain (internal order, like the grain fields).
-struct FluidForceOnGrains
-{
-    Vec3Array position;
-    const double* radius;
-    const double* coreHalfLength; //!< nullptr: every grain is a sphere
-    FluidView fluid;
-    double gravity[3];
-    Vec3Array out;
-
-    DEM_HD void operator()(int i) const
-    {
-        const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
-        out.store(i,
-                  fluid.force(position(i), volume, Vector3d(gravity[0], gravity[1], gravity[2])));
-    }
-};
 
 //- Shape families: which geometry the pair and wall kernels use and which load record a pair
 //- stores. A system of spheres only takes SphereShapes (the sphere arithmetic and its compact
@@ -174,8 +138,8 @@ struct GrainForceKernel
         force = mass * gvec - drag * v; // m g - c v
         torque = Vector3d::Zero();
         if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
-            force +=
-                fluid.force(x, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
+            force += fluid.force(
+                x, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
         if constexpr (Shapes::kCapsules)
             addEndContacts(i, x, v, omega, r, force, torque);
         else

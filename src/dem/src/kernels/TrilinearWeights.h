@@ -84,6 +84,16 @@ DEM_HD Vector3d interpolateVector(const GridView& grid, const double* field, con
     return value;
 }
 
+//- Interpolate a 1-per-cell field at x with the deposit's weights.
+DEM_HD double interpolateScalar(const GridView& grid, const double* field, const Vector3d& x)
+{
+    const TrilinearStencil s = trilinearStencil(grid, x);
+    double value = 0.0;
+    for (int c = 0; c < 8; ++c)
+        value += s.weight[c] * field[s.cell[c]];
+    return value;
+}
+
 } // namespace DEM_KERNEL_NS
 } // namespace detail
 } // namespace dem

@@ -50,6 +50,7 @@ Foam::solidPhases::demGrains::demGrains
 :
     solidPhase(mesh, dict),
     cloud_(mesh),
+    fluidForce_(fluidForceModel::New(dict)),
     porosityMin_(inputChecks::getInOpenRange(dict, "porosityMin", 0, 1)),
     porosityMax_(inputChecks::getInOpenRange(dict, "porosityMax", 0, 1)),
     topPressure_(dict.get<scalar>("topPressure")),
@@ -122,7 +123,18 @@ void Foam::solidPhases::demGrains::setPressureGradient
     const dimensionedScalar& rhoFluid
 )
 {
-    cloud_.setPressureGradient(gradp, rhoFluid.value());
+    if (fluidForce_->acts())
+    {
+        cloud_.setFluidForce
+        (
+            fluidForce_->forceDensity(gradp, porosity_)(),
+            rhoFluid.value()
+        );
+    }
+    else
+    {
+        cloud_.clearFluidForce();
+    }
 }
 
 

@@ -5,7 +5,7 @@
 
 #include "bondCompressiveCreepModel.H"
 #include "noBondMechanism.H"
-#include "selectBondModel.H"
+#include "selectModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,7 +26,7 @@ namespace Foam
 
 Foam::autoPtr<Foam::bondCompressiveCreepModel> Foam::bondCompressiveCreepModel::New(const dictionary& dict)
 {
-    return selectBondModel<bondCompressiveCreepModel>(dict, "bond compressive creep");
+    return selectModel<bondCompressiveCreepModel>(dict, "bond compressive creep");
 }
 
 

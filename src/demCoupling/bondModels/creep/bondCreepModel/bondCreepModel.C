@@ -5,7 +5,7 @@
 
 #include "bondCreepModel.H"
 #include "noBondMechanism.H"
-#include "selectBondModel.H"
+#include "selectModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,7 +26,7 @@ namespace Foam
 
 Foam::autoPtr<Foam::bondCreepModel> Foam::bondCreepModel::New(const dictionary& dict)
 {
-    return selectBondModel<bondCreepModel>(dict, "bond creep");
+    return selectModel<bondCreepModel>(dict, "bond creep");
 }
 
 

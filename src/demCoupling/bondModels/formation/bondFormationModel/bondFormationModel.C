@@ -5,7 +5,7 @@
 
 #include "bondFormationModel.H"
 #include "noBondMechanism.H"
-#include "selectBondModel.H"
+#include "selectModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,7 +26,7 @@ namespace Foam
 
 Foam::autoPtr<Foam::bondFormationModel> Foam::bondFormationModel::New(const dictionary& dict)
 {
-    return selectBondModel<bondFormationModel>(dict, "bond formation");
+    return selectModel<bondFormationModel>(dict, "bond formation");
 }
 
 

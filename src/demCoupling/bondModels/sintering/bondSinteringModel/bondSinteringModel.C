@@ -5,7 +5,7 @@
 
 #include "bondSinteringModel.H"
 #include "noBondMechanism.H"
-#include "selectBondModel.H"
+#include "selectModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,7 +26,7 @@ namespace Foam
 
 Foam::autoPtr<Foam::bondSinteringModel> Foam::bondSinteringModel::New(const dictionary& dict)
 {
-    return selectBondModel<bondSinteringModel>(dict, "bond sintering");
+    return selectModel<bondSinteringModel>(dict, "bond sintering");
 }
 
 

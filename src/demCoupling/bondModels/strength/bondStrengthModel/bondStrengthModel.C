@@ -5,7 +5,7 @@
 
 #include "bondStrengthModel.H"
 #include "noBondMechanism.H"
-#include "selectBondModel.H"
+#include "selectModel.H"
 #include "inputChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -63,7 +63,7 @@ void Foam::bondStrengthModel::fracture::set(dem::BondParameters& bonds) const
 
 Foam::autoPtr<Foam::bondStrengthModel> Foam::bondStrengthModel::New(const dictionary& dict)
 {
-    return selectBondModel<bondStrengthModel>(dict, "bond strength");
+    return selectModel<bondStrengthModel>(dict, "bond strength");
 }
 
 
