@@ -36,7 +36,6 @@ Description
 #include "permeabilityModel.H"
 #include "solidPhase.H"
 #include "fixedPressureRegion.H"
-#include "demCloud.H"
 #include "latestCompleteTime.H"
 #include "finiteCheck.H"
 
@@ -86,13 +85,9 @@ int main(int argc, char *argv[])
         qDarcy = -k/fluid.mu()*gradp;
         solid->setPressureGradient(gradp, fluid.rho());
 
-        // A time is written between two marks (latestCompleteTime): a run
-        // killed in between leaves a time that a restart sets aside
-        latestCompleteTime::beginWrite(runTime);
-        runTime.write();
-        // Last in the time: the grains' restart state
-        demCloud::writeState(mesh);
-        latestCompleteTime::endWrite(runTime);
+        // Fields, grains and the grains' restart state last, between the
+        // marks that let a restart set aside a half-written time
+        solid->write(runTime);
 
         runTime.printExecutionTime(Info);
     }

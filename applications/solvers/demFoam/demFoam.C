@@ -17,7 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "demCloud.H"
+#include "grainCoupling.H"
 #include "latestCompleteTime.H"
 #include "zeroGradientFvPatchFields.H"
 
@@ -37,8 +37,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    demCloud cloud(mesh);
-
+    // The grains deposited on the mesh, written at write times
     volScalarField porosity
     (
         IOobject
@@ -53,7 +52,20 @@ int main(int argc, char *argv[])
         dimensionedScalar("porosity", dimless, 1),
         zeroGradientFvPatchScalarField::typeName
     );
-    volScalarField predictedPorosity("predictedPorosity", porosity);
+    volScalarField porosityRate
+    (
+        IOobject
+        (
+            "ddt(porosity)",
+            runTime.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("porosityRate", dimless/dimTime, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    );
     volVectorField Us
     (
         IOobject
@@ -69,7 +81,8 @@ int main(int argc, char *argv[])
         zeroGradientFvPatchVectorField::typeName
     );
 
-    cloud.deposit(runTime.deltaTValue(), porosity, predictedPorosity, Us);
+    // Dry: no fluid force, deposited at write times only
+    grainCoupling grains(mesh, dictionary(), false, porosity, porosityRate, Us);
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -77,24 +90,17 @@ int main(int argc, char *argv[])
     {
         ++runTime;
 
-        cloud.evolve(runTime.deltaTValue());
+        grains.advance();
 
         if (runTime.writeTime())
         {
-            cloud.deposit(runTime.deltaTValue(), porosity, predictedPorosity, Us);
             Info<< "Time = " << runTime.timeName() << ", "
-                << cloud.system().contactCount() << " contacts, "
-                << cloud.particleStepsPerSecond() << " particle-steps/s"
-                << nl << endl;
+                << grains.cloud().system().contactCount() << " contacts, "
+                << grains.cloud().particleStepsPerSecond()
+                << " particle-steps/s" << nl << endl;
         }
 
-        // A time is written between two marks (latestCompleteTime): a run
-        // killed in between leaves a time that a restart sets aside
-        latestCompleteTime::beginWrite(runTime);
-        runTime.write();
-        // Last in the time: the grains' restart state
-        cloud.writeState();
-        latestCompleteTime::endWrite(runTime);
+        grains.write(runTime);
     }
 
     runTime.printExecutionTime(Info);

@@ -261,6 +261,44 @@ void Foam::demCloud::setFluidForce
 }
 
 
+void Foam::demCloud::setFluidForce
+(
+    const volVectorField& forceDensity,
+    const volScalarField& dragCoefficient,
+    const volVectorField& fluidVelocity,
+    const scalar rhoFluid
+)
+{
+    std::vector<double> f, beta, u;
+    grid_.toGrid(forceDensity.primitiveField(), f);
+    grid_.toGrid(dragCoefficient.primitiveField(), beta);
+    grid_.toGrid(fluidVelocity.primitiveField(), u);
+    dem::FluidFields fluid;
+    fluid.forceDensity = f.data();
+    fluid.dragCoefficient = beta.data();
+    fluid.velocity = u.data();
+    fluid.buoyancyDensity = rhoFluid;
+    demLibraryCall
+    (
+        "handing the fluid force with drag to the grains",
+        [&]{ system_->setFluid(grid_.grid(), fluid); }
+    );
+}
+
+
+void Foam::demCloud::depositReaction(volVectorField& reaction) const
+{
+    std::vector<double> r(3*grid_.size());
+    demLibraryCall
+    (
+        "depositing the grains' reaction on the fluid",
+        [&]{ system_->depositFluidReaction(grid_.grid(), r.data()); }
+    );
+    grid_.toMesh(r, reaction.primitiveFieldRef());
+    reaction.correctBoundaryConditions();
+}
+
+
 void Foam::demCloud::clearFluidForce()
 {
     demLibraryCall

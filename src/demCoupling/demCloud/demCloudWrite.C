@@ -117,14 +117,4 @@ void Foam::demCloud::writeState() const
 }
 
 
-void Foam::demCloud::writeState(const objectRegistry& mesh)
-{
-    const demCloud* cloud = mesh.findObject<demCloud>("demCloud");
-    if (cloud)
-    {
-        cloud->writeState();
-    }
-}
-
-
 // ************************************************************************* //

@@ -192,4 +192,14 @@ void Foam::meshGrid::toGrid(const vectorField& f, std::vector<double>& g) const
 }
 
 
+void Foam::meshGrid::toGrid(const scalarField& f, std::vector<double>& g) const
+{
+    g.resize(cellOfGrid_.size());
+    forAll(cellOfGrid_, gi)
+    {
+        g[gi] = f[cellOfGrid_[gi]];
+    }
+}
+
+
 // ************************************************************************* //

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidPhase.H"
+#include "latestCompleteTime.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -64,6 +65,16 @@ Foam::solidPhase::solidPhase(const fvMesh& mesh, const dictionary& dict)
         zeroGradientFvPatchVectorField::typeName
     )
 {}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::solidPhase::write(Time& runTime) const
+{
+    latestCompleteTime::beginWrite(runTime);
+    runTime.write();
+    latestCompleteTime::endWrite(runTime);
+}
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //

@@ -1,0 +1,238 @@
+/*---------------------------------------------------------------------------*\
+    darcyDem: CFD-DEM for water-saturated granular material
+    Licence: GPL-3.0-or-later (links OpenFOAM v1912)
+\*---------------------------------------------------------------------------*/
+
+#include "grainCoupling.H"
+#include "inputChecks.H"
+#include "latestCompleteTime.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::grainCoupling::porosityRateForm>
+Foam::grainCoupling::porosityRateFormNames
+({
+    { porosityRateForm::predictedPosition, "predictedPosition" },
+    { porosityRateForm::exactDifference, "exactDifference" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::grainCoupling::deposit()
+{
+    cloud_.deposit
+    (
+        mesh_.time().deltaTValue(), porosity_, predictedPorosity_, Us_
+    );
+
+    // The pressure equation's clamp; a dry run writes the deposit as it is
+    if (coupled_)
+    {
+        const dimensionedScalar lo("porosityMin", dimless, porosityMin_);
+        const dimensionedScalar hi("porosityMax", dimless, porosityMax_);
+        porosity_ = max(min(porosity_, hi), lo);
+        predictedPorosity_ = max(min(predictedPorosity_, hi), lo);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::grainCoupling::grainCoupling
+(
+    const fvMesh& mesh,
+    const dictionary& dict,
+    const bool coupled,
+    volScalarField& porosity,
+    volScalarField& porosityRate,
+    volVectorField& Us
+)
+:
+    mesh_(mesh),
+    coupled_(coupled),
+    cloud_(mesh),
+    fluidForce_(coupled ? fluidForceModel::New(dict) : nullptr),
+    porosityMin_
+    (
+        coupled ? inputChecks::getInOpenRange(dict, "porosityMin", 0, 1) : 0
+    ),
+    porosityMax_
+    (
+        coupled ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
+    ),
+    topPressure_(coupled ? dict.get<scalar>("topPressure") : 0),
+    rateForm_
+    (
+        coupled
+      ? porosityRateFormNames.getOrDefault
+        (
+            "porosityRate",
+            dict,
+            porosityRateForm::predictedPosition
+        )
+      : porosityRateForm::exactDifference
+    ),
+    porosity_(porosity),
+    porosityRate_(porosityRate),
+    Us_(Us),
+    predictedPorosity_
+    (
+        IOobject
+        (
+            "predictedPorosity",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("porosity", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    )
+{
+    if (coupled_)
+    {
+        if (porosityMin_ >= porosityMax_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entries 'porosityMin' (" << porosityMin_
+                << ") and 'porosityMax' (" << porosityMax_ << ") in "
+                << dict.name() << " must satisfy porosityMin < porosityMax"
+                << nl << exit(FatalIOError);
+        }
+        Info<< "    porosity rate: " << porosityRateFormNames[rateForm_]
+            << endl;
+    }
+
+    // The grains of the start time define the porosity there (also on a
+    // restart: the deposit is deterministic)
+    deposit();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::grainCoupling::advance()
+{
+    const Time& runTime = mesh_.time();
+
+    if (!coupled_)
+    {
+        cloud_.evolve(runTime.deltaTValue());
+        // Nothing reads the fields between writes
+        if (runTime.writeTime())
+        {
+            deposit();
+        }
+        return;
+    }
+
+    const volScalarField previous("porosityPrevious", porosity_);
+    cloud_.evolve(runTime.deltaTValue());
+    deposit();
+    if (rateForm_ == porosityRateForm::exactDifference)
+    {
+        porosityRate_ = (porosity_ - previous)/runTime.deltaT();
+    }
+    else
+    {
+        porosityRate_ = (predictedPorosity_ - previous)/(2*runTime.deltaT());
+    }
+}
+
+
+void Foam::grainCoupling::setPressureGradient
+(
+    const volVectorField& gradp,
+    const scalar rhoFluid
+)
+{
+    if (fluidForce_.valid() && fluidForce_->acts())
+    {
+        cloud_.setFluidForce
+        (
+            fluidForce_->forceDensity(gradp, porosity_)(),
+            rhoFluid
+        );
+    }
+    else
+    {
+        cloud_.clearFluidForce();
+    }
+}
+
+
+void Foam::grainCoupling::setFluid
+(
+    const volVectorField& forceDensity,
+    const volScalarField& dragCoefficient,
+    const volVectorField& fluidVelocity,
+    const scalar rhoFluid
+)
+{
+    cloud_.setFluidForce(forceDensity, dragCoefficient, fluidVelocity, rhoFluid);
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::grainCoupling::reaction() const
+{
+    tmp<volVectorField> tReaction
+    (
+        volVectorField::New
+        (
+            "grainReaction",
+            mesh_,
+            dimensionedVector(dimForce/dimVolume, Zero),
+            zeroGradientFvPatchVectorField::typeName
+        )
+    );
+    cloud_.depositReaction(tReaction.ref());
+    return tReaction;
+}
+
+
+void Foam::grainCoupling::fixedPressureCells
+(
+    labelList& cells,
+    scalar& value
+) const
+{
+    cells.clear();
+    value = topPressure_;
+    if (!coupled_ || !cloud_.hasTopWall())
+    {
+        return;
+    }
+
+    const meshGrid& grid = cloud_.grid();
+    const dem::UniformGrid& g = grid.grid();
+    const label kWall = label
+    (
+        std::floor((cloud_.topWallPosition() - g.origin[2])/g.spacing[2])
+    );
+
+    DynamicList<label> fixed;
+    for (label gi = 0; gi < grid.size(); ++gi)
+    {
+        if (grid.layerOf(gi) >= kWall)
+        {
+            fixed.append(grid.cellOf(gi));
+        }
+    }
+    cells.transfer(fixed);
+}
+
+
+void Foam::grainCoupling::write(Time& runTime) const
+{
+    latestCompleteTime::beginWrite(runTime);
+    runTime.write();
+    // Last in the time: the grains' restart state
+    cloud_.writeState();
+    latestCompleteTime::endWrite(runTime);
+}
+
+
+// ************************************************************************* //
