@@ -5,6 +5,7 @@
 
 #include "demCloud.H"
 #include "demLibraryCall.H"
+#include "demStart.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -13,10 +14,6 @@ namespace Foam
 {
     defineTypeNameAndDebug(demCloud, 0);
 }
-
-const char* const Foam::demCloud::topWall0Key = "demCloud.topWallInitialPosition";
-const char* const Foam::demCloud::displacement0Key = "demCloud.displacementAtStart";
-const char* const Foam::demCloud::periodicBoxKey = "demCloud.periodicBox";
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -35,97 +32,43 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         )
     ),
     mesh_(mesh),
-    properties_
-    (
-        IOobject
-        (
-            "demProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    ),
-    bonds_(properties_),
     grid_(mesh),
-    walls_(properties_, grid_.grid(), mesh.time().value()),
+    settings_(mesh, grid_.grid()),
+    writer_(mesh.time(), settings_),
     system_(),
     topWall0_(0),
-    asciiOutput_(false),
-    surfaceOutput_(true),
     simStart_(mesh.time().value()),
     particleSteps_(0),
     stepSeconds_(0)
 {
-    Info<< "Reading grains (" << properties_.objectPath() << ")" << endl;
+    Info<< "Reading grains (" << settings_.dict().objectPath() << ")"
+        << endl;
 
-    if (properties_.found("output"))
-    {
-        const word format
-        (
-            properties_.subDict("output").getOrDefault<word>("format", "binary")
-        );
-        if (format != "binary" && format != "ascii")
-        {
-            FatalIOErrorInFunction(properties_)
-                << "Entry 'output/format' in " << properties_.name()
-                << " is '" << format << "'; valid: binary ascii" << nl
-                << exit(FatalIOError);
-        }
-        asciiOutput_ = (format == "ascii");
-    }
-    // Surfaces cost about 2.4 kB per grain and write time: by default only for runs small
-    // enough to look at grain by grain (1e5 capsules would write 236 MB per time).
-    const label maxDefaultSurfaceGrains = 20000;
-    const bool surfaceChoiceGiven =
-        properties_.found("output")
-     && properties_.subDict("output").found("capsuleSurfaces");
-    if (surfaceChoiceGiven)
-    {
-        surfaceOutput_ =
-            properties_.subDict("output").get<bool>("capsuleSurfaces");
-    }
-
-    const fileName statePath(mesh.time().timePath()/"demState");
-    const bool fromState = isFile(statePath);
     demLibraryCall
     (
-        "while setting up the grains of " + properties_.objectPath(),
+        "while setting up the grains of " + settings_.dict().objectPath(),
         [&]
         {
-            system_.reset(new dem::System(readParameters()));
-            walls_.addTo(*system_);
-            if (fromState)
-            {
-                startFromState(statePath);
-            }
-            else
-            {
-                addGrainsFromFile();
-            }
-            checkTimeStep();
+            system_.reset
+            (
+                new dem::System(settings_.parameters(mesh.time().value()))
+            );
+            settings_.walls().addTo(*system_);
+            const demStart start(mesh.time(), settings_, grid_.grid(), *system_);
+            topWall0_ = start.topWall0();
+            displacement0_ = start.displacement0();
+            settings_.checkTimeStep(*system_);
             Info<< "    backend " << system_->backendName() << ", "
                 << system_->threadCount() << " thread(s)" << endl;
 
-            if (hasTopWall() && !fromState)
+            const label n = system_->grainCount();
+            if (settings_.surfaceOutputDefaulted() && !settings_.surfaceOutput(n))
             {
-                topWall0_ = system_->wall(walls_.top()).position;
-            }
-            if (displacement0_.empty())
-            {
-                displacement0_.assign(3*system_->grainCount(), 0.0);
-            }
-            if
-            (
-                !surfaceChoiceGiven
-             && label(system_->grainCount()) > maxDefaultSurfaceGrains
-            )
-            {
-                surfaceOutput_ = false;
-                Info<< "    capsule surfaces (VTK/capsules_<time>.vtp) not written: "
-                    << system_->grainCount() << " grains > "
-                    << maxDefaultSurfaceGrains
-                    << "; output { capsuleSurfaces yes; } writes them" << endl;
+                Info<< "    capsule surfaces (VTK/capsules_<time>.vtp) not"
+                    << " written: " << n << " grains > "
+                    << demSettings::maxDefaultSurfaceGrains
+                    << "; output { capsuleSurfaces yes; } writes them"
+                    << endl;
             }
         }
     );
@@ -179,14 +122,14 @@ void Foam::demCloud::evolve(const scalar dtFluid)
             << "The fluid time step (deltaT " << dtFluid << " s in "
             << "system/controlDict) must be a whole multiple of the DEM time"
             << " step (timeStep " << dt << " s in "
-            << properties_.objectPath() << ")" << nl << exit(FatalError);
+            << settings_.dict().objectPath() << ")" << nl << exit(FatalError);
     }
 
     const auto start = std::chrono::steady_clock::now();
     demLibraryCall
     (
         "at t = " + mesh_.time().timeName() + " s, grains of "
-      + properties_.objectPath(),
+      + settings_.dict().objectPath(),
         [&]
         {
             // Wall stresses and gravity held for the fluid step, at its
@@ -196,7 +139,7 @@ void Foam::demCloud::evolve(const scalar dtFluid)
             const Time& runTime = mesh_.time();
             scalar t = runTime.value();
             readScalar(runTime.timeName(), t);
-            walls_.update(*system_, t - 0.5*dtFluid);
+            settings_.walls().update(*system_, t - 0.5*dtFluid);
             system_->step(nSub);
         }
     );
@@ -313,7 +256,7 @@ dem::GrainData Foam::demCloud::libraryGrains() const
 {
     return demLibraryCall
     (
-        "reading the grains of " + properties_.objectPath(),
+        "reading the grains of " + settings_.dict().objectPath(),
         [&]{ return system_->grains(); }
     );
 }
@@ -338,7 +281,8 @@ Foam::scalar Foam::demCloud::topWallPosition() const
     }
     return demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
+        "reading the top wall",
+        [&]{ return system_->wall(settings_.walls().top()); }
     ).position;
 }
 
@@ -351,7 +295,8 @@ Foam::scalar Foam::demCloud::topWallStress() const
     }
     const dem::WallSpec spec = demLibraryCall
     (
-        "reading the top wall", [&]{ return system_->wall(walls_.top()); }
+        "reading the top wall",
+        [&]{ return system_->wall(settings_.walls().top()); }
     ).spec;
     return spec.mode == dem::WallSpec::Mode::stress ? spec.normalStress : 0;
 }
@@ -373,6 +318,25 @@ Foam::scalar Foam::demCloud::meanDiameter() const
         sum += 2*r;
     }
     return g.radius.empty() ? 0 : sum/g.radius.size();
+}
+
+
+bool Foam::demCloud::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
+) const
+{
+    writer_.writeGrains(grains(), *system_);
+    return true;
+}
+
+
+void Foam::demCloud::writeState() const
+{
+    writer_.writeState(*system_, topWall0_, displacement0_, grid_.grid());
 }
 
 

@@ -1,13 +1,10 @@
 /*---------------------------------------------------------------------------*\
     darcyDem: CFD-DEM for water-saturated granular material
     Licence: GPL-3.0-or-later (links OpenFOAM v1912)
--------------------------------------------------------------------------------
-    Writing the grains at write times: ParaView files and the input-format
-    grains with the fields (writeObject), then the restart state last
-    (writeState). Every file is written whole or not at all (atomicFile).
 \*---------------------------------------------------------------------------*/
 
-#include "demCloud.H"
+#include "grainWriter.H"
+#include "demStart.H"
 #include "demStateFile.H"
 #include "demLibraryCall.H"
 #include "atomicFile.H"
@@ -15,38 +12,46 @@
 #include "finiteCheck.H"
 #include "grainVtkWriter.H"
 #include "bondVtkWriter.H"
-#include "Time.H"
 #include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::grainWriter::grainWriter
+(
+    const Time& runTime,
+    const demSettings& settings
+)
+:
+    runTime_(runTime),
+    settings_(settings)
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::demCloud::writeObject
+void Foam::grainWriter::writeGrains
 (
-    IOstream::streamFormat,
-    IOstream::versionNumber,
-    IOstream::compressionType,
-    const bool
+    const dem::GrainData& g,
+    const dem::System& system
 ) const
 {
     // Test hook: stop among OpenFOAM's field files of this time
     atomicFile::killPoint("amongFields");
 
-    const Time& runTime = mesh_.time();
+    const Time& runTime = runTime_;
     const fileName dir(runTime.timePath());
     mkDir(dir);
 
-    const dem::GrainData g(grains());
     // Backs up the DEM step's own check: nothing non-finite is written (the
     // time then has no demState and stays incomplete)
-    finiteCheck::grains(g, runTime.value(), properties_.objectPath());
+    finiteCheck::grains(g, runTime.value(), settings_.dict().objectPath());
     grainsFile(dir/"grains").write(g);
     // ParaView files in <case>/VTK, where OpenFOAM's foamToVTK writes too:
     // a VTK file series lists files beside it, not in the time directories
     const fileName vtkDir(runTime.path()/"VTK");
     mkDir(vtkDir);
     const fileName vtp(vtkDir/("grains_" + runTime.timeName() + ".vtp"));
-    grainVtkWriter::writeVtp(vtp, g, asciiOutput_);
+    grainVtkWriter::writeVtp(vtp, g, settings_.asciiOutput());
     // the time as the directory names it (not runTime.value() with its
     // round-off), the time ParaView's OpenFOAM reader gives the fields
     grainVtkWriter::writeSeries
@@ -56,13 +61,20 @@ bool Foam::demCloud::writeObject
         readScalar(runTime.timeName())
     );
     // Capsules drawn as such: their surfaces beside the grains
-    if (surfaceOutput_ && grainVtkWriter::hasCapsules(g))
+    if
+    (
+        settings_.surfaceOutput(label(g.radius.size()))
+     && grainVtkWriter::hasCapsules(g)
+    )
     {
         const fileName surfaces
         (
             vtkDir/("capsules_" + runTime.timeName() + ".vtp")
         );
-        grainVtkWriter::writeSurfaceVtp(surfaces, g, asciiOutput_);
+        grainVtkWriter::writeSurfaceVtp
+        (
+            surfaces, g, settings_.asciiOutput()
+        );
         grainVtkWriter::writeSeries
         (
             vtkDir/"capsules.vtp.series",
@@ -70,16 +82,16 @@ bool Foam::demCloud::writeObject
             readScalar(runTime.timeName())
         );
     }
-    if (bonds_.writeVtk())
+    if (settings_.bonds().writeVtk())
     {
         const fileName bondsVtp(vtkDir/("bonds_" + runTime.timeName() + ".vtp"));
         bondVtkWriter::writeVtp
         (
             bondsVtp,
-            demLibraryCall("reading the bonds", [&]{ return system_->bonds(); }),
+            demLibraryCall("reading the bonds", [&]{ return system.bonds(); }),
             g,
-            system_->parameters(),
-            asciiOutput_
+            system.parameters(),
+            settings_.asciiOutput()
         );
         grainVtkWriter::writeSeries
         (
@@ -88,14 +100,18 @@ bool Foam::demCloud::writeObject
             readScalar(runTime.timeName())
         );
     }
-
-    return true;
 }
 
 
-void Foam::demCloud::writeState() const
+void Foam::grainWriter::writeState
+(
+    const dem::System& system,
+    const scalar topWall0,
+    const std::vector<double>& displacement0,
+    const dem::UniformGrid& grid
+) const
 {
-    const Time& runTime = mesh_.time();
+    const Time& runTime = runTime_;
     if (!runTime.writeTime())
     {
         return;
@@ -107,12 +123,10 @@ void Foam::demCloud::writeState() const
     (
         demLibraryCall
         (
-            "exporting the grains' state", [&]{ return system_->exportState(); }
+            "exporting the grains' state", [&]{ return system.exportState(); }
         )
     );
-    state.reals[topWall0Key] = {topWall0_};
-    state.reals[displacement0Key] = displacement0_;
-    state.reals[periodicBoxKey] = periodicBox();
+    demStart::addOwnEntries(state, topWall0, displacement0, grid);
     demStateFile(dir/"demState").write(state);
 }
 
