@@ -141,3 +141,43 @@ def test_dry_run_with_demFoam():
     assert os.path.exists(c.file("0.01/demState"))
     d = diagnostics(c)
     assert np.all(d[:, 6:9] == 0)  # no pore pressure in a dry run
+
+
+def step_timer_table(log):
+    """{phase: seconds} and the loop's grain-steps/s from the table the
+    solvers print at the end of the run (stepTimers)."""
+    lines = log[log.index("Step timers (wall clock"):].splitlines()
+    steps = int(lines[0].split("time loop, ")[1].split()[0])
+    seconds = {}
+    for line in lines[2:]:
+        if line.strip().startswith("whole loop:"):
+            rate = float(line.split("whole loop:")[1].split()[0])
+            break
+        *name, s, _, _ = line.split()
+        seconds[" ".join(name)] = float(s)
+    return steps, seconds, rate
+
+
+@pytest.mark.parametrize("app", ["darcyDemFoam", "demFoam"])
+def test_step_timers_account_for_the_loop(app):
+    """Both solvers end their log with the wall clock of the loop split by
+    phase: the phases and the remainder add up to the total (to the printed
+    digits), and the loop's grain-steps/s times the total is the grains x
+    DEM sub-steps x fluid steps of the run (exact bookkeeping, to the
+    printed digits: 4 of the rate, milliseconds of the total)."""
+    c = short_column(f"timers_{app}", end=0.01)
+    if app == "demFoam":
+        os.remove(c.file("constant/darcyProperties"))
+        os.remove(c.file("0/p"))
+    log = c.run(app)
+    steps, seconds, rate = step_timer_table(log)
+    phases = ["DEM steps", "deposit", "pressure", "gradient", "exchange", "write", "other"]
+    print(f"{app}: {steps} fluid steps, {seconds}, {rate:.4g} grain-steps/s")
+    assert steps == 100  # 0.01 s of 1e-4 s fluid steps
+    assert sorted(seconds) == sorted(phases + ["total"])
+    assert abs(sum(seconds[p] for p in phases) - seconds["total"]) <= 4e-3  # 7 x 5e-4 rounding
+    grains, sub_steps = 256, 10  # deltaT 1e-4 s / timeStep 1e-5 s
+    printed = 5e-4 + 5e-4 / seconds["total"]  # relative rounding of rate and total
+    assert rate * seconds["total"] == pytest.approx(grains * sub_steps * steps, rel=printed)
+    if app == "demFoam":  # no fluid: nothing timed in the fluid's phases
+        assert seconds["pressure"] == seconds["gradient"] == seconds["exchange"] == 0

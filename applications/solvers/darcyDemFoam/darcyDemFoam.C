@@ -38,6 +38,7 @@ Description
 #include "fixedPressureRegion.H"
 #include "latestCompleteTime.H"
 #include "finiteCheck.H"
+#include "stepTimers.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -64,6 +65,11 @@ int main(int argc, char *argv[])
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+    // Wall clock of the loop by phase (the grains time theirs into it);
+    // the set-up above is left out
+    stepTimers& timers = stepTimers::New(mesh);
+    timers.start();
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -75,14 +81,20 @@ int main(int argc, char *argv[])
         // Grains to the new time: porosity, its rate, mean grain velocity
         solid->evolve();
 
-        k = permeability->k(solid->porosity());
+        {
+            stepTimers::scope timed(timers, stepTimers::pressure);
+            k = permeability->k(solid->porosity());
 
-        #include "pEqn.H"
-        finiteCheck::cells(p);
+            #include "pEqn.H"
+            finiteCheck::cells(p);
+        }
 
         // Pressure gradient back to the grains for the next step
-        gradp = fvc::grad(p);
-        qDarcy = -k/fluid.mu()*gradp;
+        {
+            stepTimers::scope timed(timers, stepTimers::gradient);
+            gradp = fvc::grad(p);
+            qDarcy = -k/fluid.mu()*gradp;
+        }
         solid->setPressureGradient(gradp, fluid.rho());
 
         // Fields, grains and the grains' restart state last, between the
@@ -92,6 +104,7 @@ int main(int argc, char *argv[])
         runTime.printExecutionTime(Info);
     }
 
+    timers.printSummary(Info);
     Info<< "End\n" << endl;
 
     return 0;

@@ -19,6 +19,7 @@ Description
 #include "fvCFD.H"
 #include "grainCoupling.H"
 #include "latestCompleteTime.H"
+#include "stepTimers.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -84,6 +85,11 @@ int main(int argc, char *argv[])
     // Dry: no fluid force, deposited at write times only
     grainCoupling grains(mesh, dictionary(), false, porosity, porosityRate, Us);
 
+    // Wall clock of the loop by phase, as darcyDemFoam prints it (no fluid:
+    // no pressure, gradient or exchange); the set-up above is left out
+    stepTimers& timers = stepTimers::New(mesh);
+    timers.start();
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -103,6 +109,7 @@ int main(int argc, char *argv[])
         grains.write(runTime);
     }
 
+    timers.printSummary(Info);
     runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;
 

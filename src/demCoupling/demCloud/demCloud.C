@@ -111,7 +111,7 @@ void Foam::demCloud::reportProgress()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::demCloud::evolve(const scalar dtFluid)
+Foam::label Foam::demCloud::subStepsPerFluidStep(const scalar dtFluid) const
 {
     const scalar dt = system_->timeStep();
     const label nSub = label(std::round(dtFluid/dt));
@@ -124,6 +124,13 @@ void Foam::demCloud::evolve(const scalar dtFluid)
             << " step (timeStep " << dt << " s in "
             << settings_.dict().objectPath() << ")" << nl << exit(FatalError);
     }
+    return nSub;
+}
+
+
+void Foam::demCloud::evolve(const scalar dtFluid)
+{
+    const label nSub = subStepsPerFluidStep(dtFluid);
 
     const auto start = std::chrono::steady_clock::now();
     demLibraryCall

@@ -20,6 +20,18 @@ Foam::grainCoupling::porosityRateFormNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::grainCoupling::stepGrains()
+{
+    stepTimers::scope timed(timers_, stepTimers::demSteps);
+    cloud_.evolve(mesh_.time().deltaTValue());
+    timers_.countStep
+    (
+        double(cloud_.subStepsPerFluidStep(mesh_.time().deltaTValue()))
+       *cloud_.system().grainCount()
+    );
+}
+
+
 void Foam::grainCoupling::deposit()
 {
     cloud_.deposit
@@ -90,7 +102,8 @@ Foam::grainCoupling::grainCoupling
         mesh,
         dimensionedScalar("porosity", dimless, 1),
         zeroGradientFvPatchScalarField::typeName
-    )
+    ),
+    timers_(stepTimers::New(mesh))
 {
     if (coupled_)
     {
@@ -120,17 +133,20 @@ void Foam::grainCoupling::advance()
 
     if (!coupled_)
     {
-        cloud_.evolve(runTime.deltaTValue());
+        stepGrains();
         // Nothing reads the fields between writes
         if (runTime.writeTime())
         {
+            stepTimers::scope timed(timers_, stepTimers::deposit);
             deposit();
         }
         return;
     }
 
     const volScalarField previous("porosityPrevious", porosity_);
-    cloud_.evolve(runTime.deltaTValue());
+    stepGrains();
+
+    stepTimers::scope timed(timers_, stepTimers::deposit);
     deposit();
     if (rateForm_ == porosityRateForm::exactDifference)
     {
@@ -149,6 +165,7 @@ void Foam::grainCoupling::setPressureGradient
     const scalar rhoFluid
 )
 {
+    stepTimers::scope timed(timers_, stepTimers::exchange);
     if (fluidForce_.valid() && fluidForce_->acts())
     {
         cloud_.setFluidForce
@@ -172,12 +189,14 @@ void Foam::grainCoupling::setFluid
     const scalar rhoFluid
 )
 {
+    stepTimers::scope timed(timers_, stepTimers::exchange);
     cloud_.setFluidForce(forceDensity, dragCoefficient, fluidVelocity, rhoFluid);
 }
 
 
 Foam::tmp<Foam::volVectorField> Foam::grainCoupling::reaction() const
 {
+    stepTimers::scope timed(timers_, stepTimers::exchange);
     tmp<volVectorField> tReaction
     (
         volVectorField::New
@@ -227,11 +246,18 @@ void Foam::grainCoupling::fixedPressureCells
 
 void Foam::grainCoupling::write(Time& runTime) const
 {
-    latestCompleteTime::beginWrite(runTime);
-    runTime.write();
-    // Last in the time: the grains' restart state
-    cloud_.writeState();
-    latestCompleteTime::endWrite(runTime);
+    {
+        stepTimers::scope timed(timers_, stepTimers::write);
+        latestCompleteTime::beginWrite(runTime);
+        runTime.write();
+        // Last in the time: the grains' restart state
+        cloud_.writeState();
+        latestCompleteTime::endWrite(runTime);
+    }
+    if (runTime.writeTime())
+    {
+        timers_.printInterval(Info);
+    }
 }
 
 

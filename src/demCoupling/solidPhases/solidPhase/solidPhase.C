@@ -5,6 +5,7 @@
 
 #include "solidPhase.H"
 #include "latestCompleteTime.H"
+#include "stepTimers.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -71,9 +72,17 @@ Foam::solidPhase::solidPhase(const fvMesh& mesh, const dictionary& dict)
 
 void Foam::solidPhase::write(Time& runTime) const
 {
-    latestCompleteTime::beginWrite(runTime);
-    runTime.write();
-    latestCompleteTime::endWrite(runTime);
+    stepTimers& timers = stepTimers::New(mesh_);
+    {
+        stepTimers::scope timed(timers, stepTimers::write);
+        latestCompleteTime::beginWrite(runTime);
+        runTime.write();
+        latestCompleteTime::endWrite(runTime);
+    }
+    if (runTime.writeTime())
+    {
+        timers.printInterval(Info);
+    }
 }
 
 
