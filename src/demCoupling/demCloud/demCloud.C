@@ -128,7 +128,7 @@ Foam::label Foam::demCloud::subStepsPerFluidStep(const scalar dtFluid) const
 }
 
 
-void Foam::demCloud::evolve(const scalar dtFluid)
+Foam::label Foam::demCloud::evolve(const scalar dtFluid)
 {
     const label nSub = subStepsPerFluidStep(dtFluid);
 
@@ -157,6 +157,7 @@ void Foam::demCloud::evolve(const scalar dtFluid)
     particleSteps_ += double(nSub)*system_->grainCount();
 
     reportProgress();
+    return nSub;
 }
 
 
@@ -198,16 +199,7 @@ void Foam::demCloud::setFluidForce
     const scalar rhoFluid
 )
 {
-    std::vector<double> f;
-    grid_.toGrid(forceDensity.primitiveField(), f);
-    dem::FluidFields fluid;
-    fluid.forceDensity = f.data();
-    fluid.buoyancyDensity = rhoFluid;
-    demLibraryCall
-    (
-        "handing the fluid force to the grains",
-        [&]{ system_->setFluid(grid_.grid(), fluid); }
-    );
+    handOver(forceDensity, nullptr, nullptr, rhoFluid);
 }
 
 
@@ -219,18 +211,33 @@ void Foam::demCloud::setFluidForce
     const scalar rhoFluid
 )
 {
+    handOver(forceDensity, &dragCoefficient, &fluidVelocity, rhoFluid);
+}
+
+
+void Foam::demCloud::handOver
+(
+    const volVectorField& forceDensity,
+    const volScalarField* dragCoefficient,
+    const volVectorField* fluidVelocity,
+    const scalar rhoFluid
+)
+{
     std::vector<double> f, beta, u;
-    grid_.toGrid(forceDensity.primitiveField(), f);
-    grid_.toGrid(dragCoefficient.primitiveField(), beta);
-    grid_.toGrid(fluidVelocity.primitiveField(), u);
     dem::FluidFields fluid;
+    grid_.toGrid(forceDensity.primitiveField(), f);
     fluid.forceDensity = f.data();
-    fluid.dragCoefficient = beta.data();
-    fluid.velocity = u.data();
+    if (dragCoefficient)
+    {
+        grid_.toGrid(dragCoefficient->primitiveField(), beta);
+        grid_.toGrid(fluidVelocity->primitiveField(), u);
+        fluid.dragCoefficient = beta.data();
+        fluid.velocity = u.data();
+    }
     fluid.buoyancyDensity = rhoFluid;
     demLibraryCall
     (
-        "handing the fluid force with drag to the grains",
+        "handing the fluid force to the grains",
         [&]{ system_->setFluid(grid_.grid(), fluid); }
     );
 }

@@ -23,12 +23,8 @@ Foam::grainCoupling::porosityRateFormNames
 void Foam::grainCoupling::stepGrains()
 {
     stepTimers::scope timed(timers_, stepTimers::demSteps);
-    cloud_.evolve(mesh_.time().deltaTValue());
-    timers_.countStep
-    (
-        double(cloud_.subStepsPerFluidStep(mesh_.time().deltaTValue()))
-       *cloud_.system().grainCount()
-    );
+    const label nSub = cloud_.evolve(mesh_.time().deltaTValue());
+    timers_.countStep(double(nSub)*cloud_.system().grainCount());
 }
 
 
@@ -246,18 +242,8 @@ void Foam::grainCoupling::fixedPressureCells
 
 void Foam::grainCoupling::write(Time& runTime) const
 {
-    {
-        stepTimers::scope timed(timers_, stepTimers::write);
-        latestCompleteTime::beginWrite(runTime);
-        runTime.write();
-        // Last in the time: the grains' restart state
-        cloud_.writeState();
-        latestCompleteTime::endWrite(runTime);
-    }
-    if (runTime.writeTime())
-    {
-        timers_.printInterval(Info);
-    }
+    // Last in the time: the grains' restart state
+    latestCompleteTime::write(runTime, [this]{ cloud_.writeState(); });
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "latestCompleteTime.H"
+#include "stepTimers.H"
 #include "demStateFile.H"
 #include "IFstream.H"
 #include "OFstream.H"
@@ -118,6 +119,30 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
             << endl;
     }
     return moved;
+}
+
+
+void Foam::latestCompleteTime::write
+(
+    Time& runTime,
+    const std::function<void()>& last
+)
+{
+    stepTimers& timers = stepTimers::New(runTime);
+    {
+        stepTimers::scope timed(timers, stepTimers::write);
+        beginWrite(runTime);
+        runTime.write();
+        if (last)
+        {
+            last();
+        }
+        endWrite(runTime);
+    }
+    if (runTime.writeTime())
+    {
+        timers.printInterval(Info);
+    }
 }
 
 

@@ -69,12 +69,14 @@ Foam::stepTimers::scope::~scope()
 
 Foam::stepTimers& Foam::stepTimers::New(const objectRegistry& obr)
 {
-    stepTimers* found = obr.getObjectPtr<stepTimers>(typeName);
+    // One per run: registered on the Time, whichever registry asks
+    const objectRegistry& db = obr.time();
+    stepTimers* found = db.getObjectPtr<stepTimers>(typeName);
     if (found)
     {
         return *found;
     }
-    return regIOobject::store(new stepTimers(obr));
+    return regIOobject::store(new stepTimers(db));
 }
 
 

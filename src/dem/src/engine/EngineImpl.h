@@ -176,6 +176,8 @@ public:
     void depositFluidReaction(const UniformGrid& grid, double* reaction) const override;
     //- Points a copy of fluid_ at the fields setFluid copied (kernels get raw pointers).
     void pointFluidAt(FluidView& fluid) const;
+    //- The fluid force per grain as the next step applies it (read-back and reaction).
+    GrainFluidForce grainFluidForce() const;
 
     SystemState exportState() const override;
     void importState(const SystemState& state) override;

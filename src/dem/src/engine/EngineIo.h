@@ -236,16 +236,8 @@ GrainData EngineImpl<Exec>::grains() const
     {
         Vec<double>& fluidForce = fluidForceScratch_; // every entry set by the kernel
         fluidForce.resize(3 * std::size_t(n));
-        EngineImpl& e = self();
-        FluidView fluid = fluid_;
-        pointFluidAt(fluid);
         Exec::forEach(
-            n, FluidForceOnGrains{e.grains_.vec3(fPosition),
-                                  e.grains_.vec3(fVelocity),
-                                  e.grains_.real(fRadius),
-                                  e.grains_.real(fCoreHalfLength),
-                                  fluid,
-                                  {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
+            n, FluidForceOnGrains{grainFluidForce(),
                                   Vec3Array{thrust::raw_pointer_cast(fluidForce.data()), n}});
         std::vector<double> h(fluidForce.size());
         thrust::copy(fluidForce.begin(), fluidForce.end(), h.begin());
@@ -424,6 +416,20 @@ void EngineImpl<Exec>::pointFluidAt(FluidView& fluid) const
 }
 
 template <class Exec>
+GrainFluidForce EngineImpl<Exec>::grainFluidForce() const
+{
+    EngineImpl& e = self();
+    FluidView fluid = fluid_;
+    pointFluidAt(fluid);
+    return GrainFluidForce{e.grains_.vec3(fPosition),
+                           e.grains_.vec3(fVelocity),
+                           e.grains_.real(fRadius),
+                           grains_.hasCapsules() ? e.grains_.real(fCoreHalfLength) : nullptr,
+                           fluid,
+                           {params_.gravity[0], params_.gravity[1], params_.gravity[2]}};
+}
+
+template <class Exec>
 void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* reaction) const
 {
     const GridView g = gridView(grid, "depositFluidReaction");
@@ -432,21 +438,9 @@ void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* rea
     out.resize(values);
     thrust::fill(exec_.policy(), out.begin(), out.end(), 0.0);
     if (fluid_.active)
-    {
-        EngineImpl& e = self();
-        FluidView fluid = fluid_;
-        pointFluidAt(fluid);
         Exec::forEachScatter(
             grains_.size(),
-            DepositFluidReaction{e.grains_.vec3(fPosition),
-                                 e.grains_.vec3(fVelocity),
-                                 e.grains_.real(fRadius),
-                                 grains_.hasCapsules() ? e.grains_.real(fCoreHalfLength) : nullptr,
-                                 fluid,
-                                 {params_.gravity[0], params_.gravity[1], params_.gravity[2]},
-                                 g,
-                                 thrust::raw_pointer_cast(out.data())});
-    }
+            DepositFluidReaction{grainFluidForce(), g, thrust::raw_pointer_cast(out.data())});
     thrust::copy(out.begin(), out.end(), reaction);
 }
 

@@ -43,46 +43,46 @@ struct FluidView
     }
 };
 
-//- Read-back of the fluid force on every grain (internal order, like the grain fields).
-struct FluidForceOnGrains
+//- The fluid force on grain i as the next step applies it (FluidView at its stored position
+//- and velocity, its true volume): shared by the read-back and the reaction deposit.
+struct GrainFluidForce
 {
     Vec3Array position, velocity;
     const double* radius;
     const double* coreHalfLength; //!< nullptr: every grain is a sphere
     FluidView fluid;
     double gravity[3];
-    Vec3Array out;
 
-    DEM_HD void operator()(int i) const
+    DEM_HD Vector3d operator()(int i) const
     {
         const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
-        out.store(i, fluid.force(position(i), velocity(i), volume,
-                                 Vector3d(gravity[0], gravity[1], gravity[2])));
+        return fluid.force(position(i), velocity(i), volume,
+                           Vector3d(gravity[0], gravity[1], gravity[2]));
     }
 };
 
-//- Per grain: minus its fluid force (FluidView, the load the next step applies) spread to the
-//- 8 cell centres around it with the weights that interpolate the fields to it, per unit cell
-//- volume (System::depositFluidReaction). The weights sum to 1: the cells receive exactly
-//- minus what the grains feel.
+//- Read-back of the fluid force on every grain (internal order, like the grain fields).
+struct FluidForceOnGrains
+{
+    GrainFluidForce force;
+    Vec3Array out;
+
+    DEM_HD void operator()(int i) const { out.store(i, force(i)); }
+};
+
+//- Per grain: minus its fluid force spread to the 8 cell centres around it with the weights
+//- that interpolate the fields to it, per unit cell volume (System::depositFluidReaction).
+//- The weights sum to 1: the cells receive exactly minus what the grains feel.
 struct DepositFluidReaction
 {
-    Vec3Array position, velocity;
-    const double* radius;
-    const double* coreHalfLength; //!< nullptr: every grain is a sphere
-    FluidView fluid;
-    double gravity[3];
+    GrainFluidForce force;
     GridView grid;
     double* reaction; //!< 3 per cell interleaved
 
     DEM_HD void operator()(int i) const
     {
-        const Vector3d x = position(i);
-        const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
-        const Vector3d perCell =
-            -fluid.force(x, velocity(i), volume, Vector3d(gravity[0], gravity[1], gravity[2])) /
-            grid.cellVolume();
-        const TrilinearStencil s = trilinearStencil(grid, x);
+        const Vector3d perCell = -force(i) / grid.cellVolume();
+        const TrilinearStencil s = trilinearStencil(grid, force.position(i));
         for (int c = 0; c < 8; ++c)
             for (int d = 0; d < 3; ++d)
                 atomicAddDouble(reaction + 3 * s.cell[c] + d, s.weight[c] * perCell[d]);

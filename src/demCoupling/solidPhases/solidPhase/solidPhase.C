@@ -5,7 +5,6 @@
 
 #include "solidPhase.H"
 #include "latestCompleteTime.H"
-#include "stepTimers.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -72,17 +71,7 @@ Foam::solidPhase::solidPhase(const fvMesh& mesh, const dictionary& dict)
 
 void Foam::solidPhase::write(Time& runTime) const
 {
-    stepTimers& timers = stepTimers::New(mesh_);
-    {
-        stepTimers::scope timed(timers, stepTimers::write);
-        latestCompleteTime::beginWrite(runTime);
-        runTime.write();
-        latestCompleteTime::endWrite(runTime);
-    }
-    if (runTime.writeTime())
-    {
-        timers.printInterval(Info);
-    }
+    latestCompleteTime::write(runTime);
 }
 
 
