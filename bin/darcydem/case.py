@@ -59,7 +59,7 @@ def copy_tutorial(tutorial, name):
     path = os.path.join(TEST_RUNS, name)
     shutil.rmtree(path, ignore_errors=True)
     shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", tutorial), path,
-                    ignore=shutil.ignore_patterns("stages", "*.png", "results.json", "log.*"))
+                    ignore=shutil.ignore_patterns("stages", "*.png", "results*.json", "log.*"))
     apply_backend(path)
     return path
 

@@ -17,6 +17,20 @@ sections 2.4 and 3, run through real case directories:
   4. rate series  the impermeable case with mu_f = 1, 0.1, 0.01 x mu_ref,
                   the paper's stand-in for shearing 1, 10, 100 x slower.
 
+The fluid's force on the grains of the saturated stages (darcyProperties
+solidPhase/fluidForce, doc/EQUATIONS.md section 7) is the template's,
+pressureGradient (-V grad p per grain, the seed's eq 12), unless fluid_force
+(--fluid-force) names another: darcy (-V grad p/(1 - porosity), the whole
+Darcy force on the skeleton). A non-default model is set in every saturated
+stage, and its name is a suffix of those stages (stages/permeable-darcy,
+...), of the results file (results-darcy.json) and of the figures
+(shearFriction-darcy.png, ...), so runs of the two models sit side by side;
+settle, consolidate and dry do not depend on it and keep their names (a
+rerun overwrites them). results*.json record the model as 'fluidForce'. With reuse
+(--reuse-packing) finished settle, consolidate and dry stages of an earlier
+run of the same size are read instead of run again: the second model then
+shears exactly the same packing.
+
 Every stage is a case directory under <study>/stages/<stage>, made from the
 template case in <study> (0/, constant/, system/); DARCYDEM_BACKEND=cpu|cuda|auto
 sets the DEM backend of every stage (bin/darcydem/case.py), else the
@@ -24,9 +38,11 @@ template's 'backend' holds. Sizes: SIZES below.
 """
 
 import argparse
+import filecmp
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -57,6 +73,10 @@ def scaled_beta(kn):
 
 # Profiles p(z) per shear case, for the p(z, strain) maps (Fig. 11)
 PROFILES_PER_CASE = 100
+
+# The fluid force models shearStudy offers (solidPhase/fluidForce/type); the
+# first is the template's and the default.
+FLUID_FORCES = ("pressureGradient", "darcy")
 
 # kc of the two saturated cases [m^2]
 PERMEABLE_KC = 3.5e-13
@@ -99,9 +119,17 @@ def hanning_smooth(y, width):
 
 
 class ShearStudy:
-    def __init__(self, study_dir, size="quick", rate_series=True, log=print):
+    def __init__(self, study_dir, size="quick", rate_series=True, log=print,
+                 fluid_force=FLUID_FORCES[0], reuse=False):
         if size not in SIZES:
             sys.exit(f"shearStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
+        if fluid_force not in FLUID_FORCES:
+            sys.exit(f"shearStudy: unknown fluid force '{fluid_force}'; "
+                     f"valid: {' '.join(FLUID_FORCES)}")
+        self.fluid_force = fluid_force
+        self.reuse = reuse
+        # suffix of the saturated stages, the results file and the figures
+        self.suffix = "" if fluid_force == FLUID_FORCES[0] else "-" + fluid_force
         self.s = dict(SIZES[size])
         self.size = size
         self.rate_series = rate_series
@@ -113,7 +141,8 @@ class ShearStudy:
         self.dx = s["box"][0] / s["cells"][0]
         self.d = 2 * s["radius"][1]
         self.beta = scaled_beta(s["kn"])
-        self.results = {"size": size, "settings": dict(s), "beta": self.beta}
+        self.results = {"size": size, "settings": dict(s), "beta": self.beta,
+                        "fluidForce": fluid_force}
 
     def normal_damping(self):
         """gamma_n = 2 zeta sqrt(m* k_n) for two grains of the largest radius."""
@@ -216,6 +245,65 @@ class ShearStudy:
             "contactsPerGrain": float(d["contacts"][-1]),
             "meshCellsZ": self.cells_z}
 
+    def finished(self, name, end):
+        """The stage stages/<name> if it ran to end (its last write, within
+        one fluid step: endTime is written to 6 digits), else None."""
+        path = os.path.join(self.stages, name)
+        if not os.path.isdir(path):
+            return None
+        c = Case.existing(path)
+        times = c.times()
+        step = self.s["subSteps"] * self.s["timeStep"]
+        if not times or abs(times[-1][0] - end) > step * (1 + 1e-6) or not os.path.exists(
+                c.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat")):
+            return None
+        return c
+
+    def reuse_prepared(self):
+        """Take the packing from a finished consolidate stage of the same size
+        (count, box, stiffness, time step) instead of preparing it; False if
+        there is none."""
+        s = self.s
+        b = self.finished("consolidate", s["consolidateTime"])
+        if b is None:
+            return False
+        state = b.file(os.path.join(self.last_time(b), "demState"))
+        grains = np.loadtxt(b.file("0/grains"), comments="#", ndmin=2)
+        block = open(b.file("system/blockMeshDict")).read()
+        dem = open(b.file("constant/demProperties")).read()
+
+        def number(text, key):
+            m = re.search(r"(?m)^\s*%s\s+([^;\s]+)\s*;" % key, text)
+            return float(m.group(1)) if m else None
+
+        pairs = ((number(block, "Lx"), s["box"][0]), (number(block, "Ly"), s["box"][1]),
+                 (number(dem, "normalStiffness"), s["kn"]),
+                 (number(dem, "timeStep"), s["timeStep"]))
+        same = len(grains) == s["count"] and all(
+            a is not None and math.isclose(a, b, rel_tol=1e-9) for a, b in pairs)
+        if not same or not os.path.exists(state):
+            return False
+        d = self.diagnostics(b)
+        self.cells_z = int(number(block, "nz"))
+        self.prepared = state
+        self.height = float(d["wall"][-1])
+        self.results["prepare"] = {
+            "grains": int(len(grains)), "height": self.height,
+            "kineticEnergyEnd": float(d["kinetic"][-1]),
+            "contactsPerGrain": float(d["contacts"][-1]),
+            "meshCellsZ": self.cells_z, "reused": True}
+        self.log(f"shearStudy: reuse the packing of {b.path}")
+        return True
+
+    def reused_dry(self):
+        """The summary of a finished dry stage sheared from this packing, or None."""
+        v = self.shear_velocity()
+        c = self.finished("dry", self.s["strain"] * (self.height + self.d) / v)
+        if c is None or not filecmp.cmp(c.file("0/demState"), self.prepared, shallow=False):
+            return None
+        self.log(f"shearStudy: reuse the dry shear of {c.path}")
+        return self.summarise(c, "dry", None, None, v)
+
     def shear_velocity(self):
         s = self.s
         if "shearVelocity" in s:
@@ -237,10 +325,12 @@ class ShearStudy:
             self.height**2 * self.beta * gamma_dot)
 
     def shear(self, name, kc=None, mu_factor=1.0, velocity_factor=1.0, strain=None):
-        """One shear case from the prepared packing; kc None: dry."""
+        """One shear case from the prepared packing; kc None: dry. A
+        saturated case runs in stages/<name><suffix> (fluid force model)."""
         s = self.s
         app = "demFoam" if kc is None else "darcyDemFoam"
-        c = self.stage(name, app, self.cells_z, self.prepared)
+        stage = name if kc is None else name + self.suffix
+        c = self.stage(stage, app, self.cells_z, self.prepared)
         v = self.shear_velocity() * velocity_factor
         strain = strain or s["strain"]
         dem = "constant/demProperties"
@@ -256,12 +346,16 @@ class ShearStudy:
             c.set(props, "mu", "[1 -1 -1 0 0 0 0] %.12g" % mu)
             c.set(props, "beta", "[-1 1 2 0 0 0 0] %.12g" % self.beta)
             c.set(props, "permeability/kc", kc)
+            if self.suffix:  # the template's default stays untouched
+                c.set(props, "solidPhase/fluidForce/type", self.fluid_force)
         # strain = top-layer displacement / current height: allow one diameter of dilation
         end = strain * (self.height + self.d) / v
         self.end_and_writes(c, end, s["writes"])
         self.profiles_every(c, end)
-        self.log(f"shearStudy: shear {name}: v = {v:.4g} m/s to strain {strain}"
-                 + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s"))
+        self.log(f"shearStudy: shear {stage}: v = {v:.4g} m/s to strain {strain}"
+                 + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s")
+                 + ("" if kc is None or not self.suffix
+                    else f", fluid force {self.fluid_force}"))
         c.run(app)
         return self.summarise(c, name, kc, mu, v)
 
@@ -304,11 +398,13 @@ class ShearStudy:
     # ---- the experiment -------------------------------------------------------------------
     def run(self):
         self.curves = {}
-        self.prepare()
+        reused = self.reuse and self.reuse_prepared()
+        if not reused:
+            self.prepare()
         r = self.results
         r["shearVelocity"] = self.shear_velocity()
         r["referenceViscosity"] = self.reference_viscosity()
-        r["dry"] = self.shear("dry")
+        r["dry"] = (reused and self.reused_dry()) or self.shear("dry")
         r["permeable"] = self.shear("permeable", kc=PERMEABLE_KC)
         r["impermeable"] = self.shear("impermeable", kc=IMPERMEABLE_KC)
         if self.rate_series:
@@ -336,8 +432,11 @@ class ShearStudy:
         self.write_results()
         return r
 
+    def results_name(self):
+        return "results%s.json" % self.suffix
+
     def write_results(self):
-        with open(os.path.join(self.dir, "results.json"), "w") as f:
+        with open(os.path.join(self.dir, self.results_name()), "w") as f:
             json.dump(self.results, f, indent=2)
 
     # ---- figures --------------------------------------------------------------------------
@@ -394,7 +493,8 @@ class ShearStudy:
         ax[2, 0].set_ylabel("pore pressure [kPa]")
         ax[0, 0].legend(loc="lower right")
         ax[2, 2].legend(loc="lower right")
-        fig.suptitle(f"Shear experiment ({self.size} size): dry, permeable, impermeable")
+        fig.suptitle(f"Shear experiment ({self.size} size): dry, permeable, impermeable"
+                     + ("" if not self.suffix else f"; fluid force {self.fluid_force}"))
         fig.tight_layout()
         out.append(self.save(fig, "shearFriction.png"))
 
@@ -474,7 +574,8 @@ class ShearStudy:
 
     def save(self, fig, name):
         import matplotlib.pyplot as plt
-        path = os.path.join(self.dir, name)
+        stem, ext = os.path.splitext(name)
+        path = os.path.join(self.dir, stem + self.suffix + ext)
         fig.savefig(path, dpi=110)
         plt.close(fig)
         return path
@@ -486,10 +587,20 @@ def main(argv):
     ap.add_argument("study_dir")
     ap.add_argument("--size", default="quick", choices=sorted(SIZES))
     ap.add_argument("--no-rate-series", action="store_true")
+    ap.add_argument("--fluid-force", default=FLUID_FORCES[0], choices=FLUID_FORCES,
+                    help="fluid force on the grains of the saturated stages "
+                    "(solidPhase/fluidForce/type; default %(default)s, the seed's eq 12); "
+                    "a non-default model suffixes the saturated stages, the results "
+                    "file and the figures with -MODEL")
+    ap.add_argument("--reuse-packing", action="store_true",
+                    help="take the packing and the dry shear from finished stages of an "
+                    "earlier run of the same size (e.g. the default model's) instead of "
+                    "running them again")
     a = ap.parse_args(argv)
-    study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series)
+    study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series,
+                       fluid_force=a.fluid_force, reuse=a.reuse_packing)
     results = study.run()
     figures = study.plot()
     print(json.dumps({k: v for k, v in results.items() if k != "settings"}, indent=2))
     print("shearStudy: figures " + " ".join(os.path.basename(f) for f in figures)
-          + " and results.json in " + study.dir)
+          + " and " + study.results_name() + " in " + study.dir)
