@@ -81,7 +81,7 @@ def test_make_grains_missing_output_folder(tmp_path):
 def test_make_grains_impossible_count_fails_fast(tmp_path):
     """1500 grains of r 4-5 mm with clearance 1.1 in 1e-3 m^3 need 0.78 of
     the box; random placement stops near 0.38. Refused before placing (the
-    try budget took minutes to say so)."""
+    try budget ran for minutes before saying so)."""
     start = time.monotonic()
     r = run(["makeGrains", *MAKE_GRAINS_ARGS, "--count", "1500", "-o", "grains"], tmp_path)
     seconds = time.monotonic() - start
