@@ -20,11 +20,11 @@ sets the DEM backend of every stage (bin/darcydem/case.py), else the
 template's 'backend' holds.
 """
 
+import argparse
 import json
 import os
 import shutil
 import subprocess
-import sys
 
 import numpy as np
 
@@ -32,6 +32,7 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                layered_consolidation, ramp_loaded_consolidation,
                                undrained_pressure)
 from darcydem.case import Case
+from darcydem.cli import StageClock, require_folder, say
 from darcydem.foamfiles import read_internal_field, read_probes, read_scalar_entry
 
 SIGMA0 = 2e4        # prepared stress on the lid [Pa]
@@ -47,11 +48,16 @@ QUASI_STATIC_DRAG = 0.5
 # periods of the lid-on-packing vibration, ~6 ms), so that the load step
 # excites little vibration; the theory superposes Terzaghi over the ramp.
 RAMP = 0.02
+# what a study folder (the template of every stage) must hold; checked
+# before stages/ is made in it
+TEMPLATE_FILES = ("system/controlDict", "system/blockMeshDict", "constant/demProperties",
+                  "constant/darcyProperties", "0/p")
 LOAD_HISTORY = "table ((0 %g) (%g %g))" % (SIGMA0, RAMP, SIGMA0 + LOAD)
 
 
 class Study:
-    def __init__(self, study_dir):
+    def __init__(self, study_dir, log=say):
+        self.clock = StageClock("consolidationStudy", log)
         self.dir = os.path.abspath(study_dir)
         self.stages = os.path.join(self.dir, "stages")
         self.template_root = os.path.dirname(self.dir)
@@ -92,7 +98,7 @@ class Study:
                         "-o", a.file("0/grains")], check=True, stdout=subprocess.DEVNULL)
         self.dry(a, settle_time, drag=DRAG)
         a.set("constant/demProperties", "walls/top/mode", "fixed")
-        a.run("demFoam")
+        self.clock.run(a, "demFoam", "settle", "grains settle, lid fixed", settle_time)
         grains = np.loadtxt(a.file(os.path.join(a.times()[-1][1], "grains")))
 
         b = self.stage("prepare", "demFoam")
@@ -101,7 +107,7 @@ class Study:
         lid = float(np.max(grains[:, 2] + grains[:, 3])) + 0.001
         b.set("constant/demProperties", "walls/top/position", lid)
         b.set("constant/demProperties", "walls/top/normalStress", SIGMA0)
-        b.run("demFoam")
+        self.clock.run(b, "demFoam", "prepare", f"lid at sigma0 = {SIGMA0:g} Pa", load_time)
         d = self.diagnostics(b)
         self.prepared = self.last_state(b)
         self.prepared_grains = b.file(os.path.join(b.times()[-1][1], "grains"))
@@ -124,7 +130,7 @@ class Study:
         # the grains at 16 times: the mean over the tail gives the strain profile
         c.set("system/controlDict", "writeInterval", end / 16)
         c.set("constant/demProperties", "walls/top/normalStress", LOAD_HISTORY)
-        c.run("demFoam")
+        self.clock.run(c, "demFoam", "oedometer", f"dry load step +{LOAD:g} Pa", end)
         self.oedometer_case = c
         d = self.diagnostics(c)
         h0 = self.height0 = d["wall"][0]  # lid height above the base at the first step
@@ -187,7 +193,8 @@ class Study:
         c.set("system/controlDict", "writeInterval", 0.002)
         c.set("system/controlDict", "writeFormat", "ascii")
         c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % dp)
-        c.run("darcyDemFoam")
+        self.clock.run(c, "darcyDemFoam", "permeability",
+                       f"steady flow, grains fixed, dp = {dp:g} Pa", 0.002)
         name = c.times()[-1][1]
         C = c.cell_centres()
         q = read_internal_field(c.file(os.path.join(name, "qDarcy")))
@@ -250,7 +257,8 @@ class Study:
         c.set("system/controlDict", "writeInterval", end)
         c.set("system/controlDict", "functions/baseProbe/probeLocations",
               "((%g %g %g))" % (self.L / 4, self.L / 4, self.dz / 2))
-        c.run("darcyDemFoam")
+        self.clock.run(c, "darcyDemFoam", name,
+                       f"saturated load step +{LOAD:g} Pa, fluid step {dt:g} s", end)
         d = self.diagnostics(c)
         t, p = read_probes(c.file("postProcessing/baseProbe/0/p"))
         return d["t"], d["wall"], t, p
@@ -409,10 +417,19 @@ class Study:
 
 
 def main(argv):
-    if len(argv) != 1:
-        sys.exit("usage: consolidationStudy STUDY_DIR")
-    study = Study(argv[0])
+    ap = argparse.ArgumentParser(
+        prog="consolidationStudy",
+        description="Run the consolidation study of a tutorial directory "
+                    "(bin/darcydem/consolidation.py): prepare, oedometer, permeability, "
+                    "consolidation twice; writes results.json and consolidation.png there "
+                    "and each stage's case under STUDY_DIR/stages.")
+    ap.add_argument("study_dir", metavar="STUDY_DIR",
+                    help="the template case (0/, constant/, system/), e.g. "
+                         "tutorials/darcyDemFoam/consolidation")
+    a = ap.parse_args(argv)
+    require_folder("consolidationStudy", a.study_dir, TEMPLATE_FILES)
+    study = Study(a.study_dir)
     results = study.run()
     out = study.plot()
-    print(json.dumps(results, indent=2))
-    print(f"consolidationStudy: wrote {out} and results.json")
+    say(json.dumps(results, indent=2))
+    say(f"consolidationStudy: wrote {out} and results.json")

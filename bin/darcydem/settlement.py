@@ -33,11 +33,11 @@ import json
 import os
 import subprocess
 import sys
-import time
 
 import numpy as np
 
 from darcydem.case import Case
+from darcydem.cli import StageClock, require_folder, say
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -51,6 +51,10 @@ GRAVITY = 9.81e-3
 GRAVITY_RAMP = 0.1                       # [s] from zero to GRAVITY
 TIME_STEP = 1e-5                         # the paper's DEM step [s]
 STEPS_PER_FLUID_STEP = 20
+
+# what a study folder (the template of every stage) must hold; checked
+# before stages/ is made in it
+TEMPLATE_FILES = ("system/controlDict", "system/blockMeshDict", "constant/demProperties")
 
 SIZES = {
     # The paper: 1000 grains in its box, 3 s of settlement per contact viscosity.
@@ -173,12 +177,13 @@ class Run:
 
 
 class SettlementStudy:
-    def __init__(self, study_dir, size="quick", log=print):
+    def __init__(self, study_dir, size="quick", log=say):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
         self.size = size
         self.log = log
+        self.clock = StageClock("settlementStudy", log)
         self.dir = os.path.abspath(study_dir)
         self.stages = os.path.join(self.dir, "stages")
         os.makedirs(self.stages, exist_ok=True)
@@ -261,9 +266,8 @@ class SettlementStudy:
         a.set(dem, "gravity", "(0 0 0)")
         a.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
         self.controls(a, self.contraction_time(), 4, rows=400)
-        self.log(f"settlementStudy: contract {s['count']} capsules by {CONTRACTION} in x and z"
-                 f" ({self.contraction_time():.3g} s)")
-        self.timed_run(a, "contract")
+        self.timed_run(a, "contract", f"{s['count']} capsules contract by {CONTRACTION}"
+                       " in x and z", self.contraction_time())
 
         b = self.stage("relax", state_from=self.last_state(a))
         self.set_walls(b, moving=False)
@@ -278,8 +282,7 @@ class SettlementStudy:
         b.set(dem, "viscousDrag", RELAX_DRAG)
         b.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
         self.controls(b, RELAX_TIME, 1, rows=100)
-        self.log(f"settlementStudy: relax ({RELAX_TIME} s, drag {RELAX_DRAG} N s/m)")
-        self.timed_run(b, "relax")
+        self.timed_run(b, "relax", f"drag {RELAX_DRAG} N s/m", RELAX_TIME)
         self.prepared = self.last_state(b)
         start = read_columns(b.file(PACKING))
         self.results["prepare"] = {k: float(start[k][-1]) for k in
@@ -290,12 +293,9 @@ class SettlementStudy:
     def last_state(case):
         return case.file(os.path.join(case.times()[-1][1], "demState"))
 
-    def timed_run(self, case, name):
-        t0 = time.time()
-        case.run("demFoam")
-        seconds = time.time() - t0
+    def timed_run(self, case, name, what, end):
+        seconds = self.clock.run(case, "demFoam", name, what, end)
         self.results.setdefault("wallSeconds", {})[name] = seconds
-        self.log(f"settlementStudy: {name} took {seconds:.0f} s")
         return seconds
 
     def settle(self, nu, creep_off=None):
@@ -308,10 +308,9 @@ class SettlementStudy:
         if creep_off is not None:
             c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
         self.controls(c, self.s["settleTime"], 4)
-        self.log(f"settlementStudy: settle, contact viscosity {label(nu)}"
-                 f" ({self.s['settleTime']} s)"
-                 + ("" if creep_off is None else f", {creep_off} creep off"))
-        seconds = self.timed_run(c, name)
+        seconds = self.timed_run(c, name, f"settle, contact viscosity {label(nu)}"
+                                 + ("" if creep_off is None else f", {creep_off} creep off"),
+                                 self.s["settleTime"])
         steps = round(self.s["settleTime"] / TIME_STEP)
         run = Run(c.path, nu, self.s["box"][1])
         run.creep_off = creep_off
@@ -545,8 +544,8 @@ def main(argv):
     ap.add_argument("--keep-sample", action="store_true",
                     help="start from the sample already in stages/relax")
     a = ap.parse_args(argv)
-    study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
-                            log=lambda m: print(m, flush=True))
+    require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
+    study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size)
     if a.plot_only:
         # keep what the runs recorded (preparation, timings); the figures' numbers update
         previous = os.path.join(study.dir, "results.json")

@@ -50,6 +50,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case
+from darcydem.cli import StageClock, require_folder, say
 from darcydem.foamfiles import grain_files, read_vtp, time_dirs
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -81,6 +82,11 @@ FLUID_FORCES = ("pressureGradient", "darcy")
 # kc of the two saturated cases [m^2]
 PERMEABLE_KC = 3.5e-13
 IMPERMEABLE_KC = 3.5e-15
+
+# what a study folder (the template of every stage) must hold; checked
+# before stages/ is made in it
+TEMPLATE_FILES = ("system/controlDict", "system/blockMeshDict", "constant/demProperties",
+                  "constant/darcyProperties")
 
 SIZES = {
     # Table 1 of the seed paper: meant for a GPU (days on 2 CPU cores).
@@ -119,7 +125,7 @@ def hanning_smooth(y, width):
 
 
 class ShearStudy:
-    def __init__(self, study_dir, size="quick", rate_series=True, log=print,
+    def __init__(self, study_dir, size="quick", rate_series=True, log=say,
                  fluid_force=FLUID_FORCES[0], reuse=False):
         if size not in SIZES:
             sys.exit(f"shearStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
@@ -134,6 +140,7 @@ class ShearStudy:
         self.size = size
         self.rate_series = rate_series
         self.log = log
+        self.clock = StageClock("shearStudy", log)
         self.dir = os.path.abspath(study_dir)
         self.stages = os.path.join(self.dir, "stages")
         os.makedirs(self.stages, exist_ok=True)
@@ -221,8 +228,8 @@ class ShearStudy:
         a.set(dem, "viscousDrag", 0.1 * s["drag"])  # falls at about 1 m/s
         a.set(dem, "contact/friction", s["preparationFriction"])
         self.end_and_writes(a, s["settleTime"], 1)
-        self.log(f"shearStudy: settle {s['count']} grains ({s['settleTime']} s)")
-        a.run("demFoam")
+        self.clock.run(a, "demFoam", "settle", f"{s['count']} grains settle",
+                       s["settleTime"])
         grains = np.loadtxt(a.file(os.path.join(self.last_time(a), "grains")), comments="#")
         top = float(np.max(grains[:, 2] + grains[:, 3]))
 
@@ -233,9 +240,8 @@ class ShearStudy:
         b.set(dem, "viscousDrag", s["drag"])
         b.set(dem, "contact/friction", s["preparationFriction"])
         self.end_and_writes(b, s["consolidateTime"], 1)
-        self.log(f"shearStudy: consolidate at sigma0 = {s['sigma0']:g} Pa "
-                 f"({s['consolidateTime']} s)")
-        b.run("demFoam")
+        self.clock.run(b, "demFoam", "consolidate", f"at sigma0 = {s['sigma0']:g} Pa",
+                       s["consolidateTime"])
         d = self.diagnostics(b)
         self.prepared = b.file(os.path.join(self.last_time(b), "demState"))
         self.height = float(d["wall"][-1])  # bottom wall at z = 0
@@ -352,11 +358,10 @@ class ShearStudy:
         end = strain * (self.height + self.d) / v
         self.end_and_writes(c, end, s["writes"])
         self.profiles_every(c, end)
-        self.log(f"shearStudy: shear {stage}: v = {v:.4g} m/s to strain {strain}"
-                 + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s")
-                 + ("" if kc is None or not self.suffix
-                    else f", fluid force {self.fluid_force}"))
-        c.run(app)
+        self.clock.run(c, app, stage, f"shear at v = {v:.4g} m/s to strain {strain}"
+                       + ("" if kc is None else f", kc = {kc:g} m^2, mu_f = {mu:.4g} Pa s")
+                       + ("" if kc is None or not self.suffix
+                          else f", fluid force {self.fluid_force}"), end)
         return self.summarise(c, name, kc, mu, v)
 
     def summarise(self, c, name, kc, mu, v):
@@ -582,7 +587,7 @@ class ShearStudy:
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description="Run the shear experiment of a tutorial "
+    ap = argparse.ArgumentParser(prog="shearStudy", description="Run the shear experiment of a tutorial "
                                  "directory (bin/darcydem/shear.py).")
     ap.add_argument("study_dir")
     ap.add_argument("--size", default="quick", choices=sorted(SIZES))
@@ -597,10 +602,11 @@ def main(argv):
                     "earlier run of the same size (e.g. the default model's) instead of "
                     "running them again")
     a = ap.parse_args(argv)
+    require_folder("shearStudy", a.study_dir, TEMPLATE_FILES)
     study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series,
                        fluid_force=a.fluid_force, reuse=a.reuse_packing)
     results = study.run()
     figures = study.plot()
-    print(json.dumps({k: v for k, v in results.items() if k != "settings"}, indent=2))
-    print("shearStudy: figures " + " ".join(os.path.basename(f) for f in figures)
-          + " and " + study.results_name() + " in " + study.dir)
+    say(json.dumps({k: v for k, v in results.items() if k != "settings"}, indent=2))
+    say("shearStudy: figures " + " ".join(os.path.basename(f) for f in figures)
+        + " and " + study.results_name() + " in " + study.dir)
