@@ -4,6 +4,7 @@
 //  - a rigidly translating packing deposits exactly its velocity;
 //  - the predicted porosity equals the porosity of the grains moved by v dt_f;
 //  - a uniform force density f = -grad p gives F = -V grad p - rho_f V g on every grain;
+//  - the fields are read where each grain is at setFluid and held over the DEM steps;
 //  - drag: a uniform beta and u give F = V beta (u - v), and a lone grain relaxes to u as
 //    exp(-beta t/rho_s) (the exact solution of m dv/dt = V beta (u - v));
 //  - the grains' reaction deposited on the cells sums to minus their fluid forces (momentum
@@ -282,6 +283,49 @@ TEST_P(Coupling, UniformPressureGradientAndBuoyancy)
         s.step(1);
         EXPECT_NEAR(s.grains().force[2], out.mass[0] * p.gravity[2], 1e-12);
     }
+}
+
+// The fields are read where a grain is when they are handed over (setFluid) and held over the
+// fluid step's DEM steps (doc/EQUATIONS.md 7): a grain crossing a field that varies along z keeps
+// the force of its start until the next setFluid, which takes the force of its new place; a grain
+// added after setFluid feels the fluid too. f = a + b z is linear inside the cells, so the
+// trilinear value is exact: the force is V (a + b z) to round-off.
+TEST_P(Coupling, FluidLoadIsTakenWhereTheGrainIsWhenTheFieldsAreSet)
+{
+    dem::Parameters p = parameters();
+    p.boxUpper = {box, box};
+    p.gravity = {0, 0, 0};
+    dem::System s(p);
+    dem::GrainInit grain;
+    grain.position = {0.1, 0.1, 0.04};
+    grain.radius = 0.004;
+    grain.velocity = {0, 0, 10.0}; // 1e-5 m per step with the tests' dt of 1e-6 s
+    s.addGrain(grain);
+    const dem::UniformGrid g = grid();
+    const double a = 50.0, b = 2e4; // N/m^3 and N/m^4
+    std::vector<double> field(3 * g.cellCount(), 0.0);
+    for (int k = 0; k < g.n[2]; ++k)
+        for (int j = 0; j < g.n[1]; ++j)
+            for (int i = 0; i < g.n[0]; ++i)
+                field[3 * (i + g.n[0] * (j + g.n[1] * k)) + 2] = a + b * (k + 0.5) * g.spacing[2];
+    dem::FluidFields fluid;
+    fluid.forceDensity = field.data();
+    s.setFluid(g, fluid);
+    const double volume = 4.0 / 3.0 * M_PI * std::pow(grain.radius, 3);
+    const auto forceAt = [&](double z) { return volume * (a + b * z); };
+    const int steps = 1000; // 1 cm of the 2.5-cm cells: the field at the grain changes by 40 %
+    s.step(steps);
+    const dem::GrainData held = s.grains();
+    const double z = held.position[2], m = held.mass[0];
+    EXPECT_GT(z - grain.position[2], 0.009);
+    // held: the force of the start; its velocity gained F dt/m per step
+    EXPECT_NEAR(held.fluidForce[2], forceAt(grain.position[2]), 1e-12 * forceAt(z));
+    EXPECT_NEAR(held.velocity[2], 10.0 + forceAt(grain.position[2]) * steps * p.timeStep / m, 1e-9);
+    s.setFluid(g, fluid); // the next fluid step: the force where the grain is now
+    EXPECT_NEAR(s.grains().fluidForce[2], forceAt(z), 1e-12 * forceAt(z));
+    grain.position = {0.05, 0.05, 0.11};
+    s.addGrain(grain); // after setFluid
+    EXPECT_NEAR(s.grains().fluidForce[5], forceAt(0.11), 1e-12 * forceAt(0.11));
 }
 
 TEST_P(Coupling, DragRelaxesAGrainToTheFluidVelocity)

@@ -115,14 +115,15 @@ public:
                  double* predictedPorosity, double* meanVelocity,
                  double* solidVolume = nullptr) const;
     //- From now on every step adds F = V_g (f(x) + beta(x) (u(x) - v) - rho_f g) to each grain
-    //- (FluidFields), the cell fields interpolated with the deposit's weights. The fields are
-    //- copied; call again after every fluid solution.
+    //- (FluidFields), the cell fields interpolated with the deposit's weights at x, where the
+    //- grain is now (this call), and held until the next call; v and g are those of each step.
+    //- The fields are copied; call again after every fluid solution (once per fluid step).
     void setFluid(const UniformGrid& grid, const FluidFields& fluid);
     void clearFluid();
     //- The grains' reaction on the fluid: per cell of `grid` (3 per cell interleaved) minus
     //- the sum of the fluid forces F on the grains (as the next step would apply them, at the
-    //- current positions and velocities), each spread with the same trilinear weights that
-    //- interpolate the fields to it, divided by the cell volume [N/m^3]. Momentum is
+    //- current velocities), each spread with the trilinear weights of its current position,
+    //- divided by the cell volume [N/m^3]. Momentum is
     //- conserved: sum over cells of reaction V_cell = -sum over grains of F. Zero without a
     //- fluid.
     void depositFluidReaction(const UniformGrid& grid, double* reaction) const;

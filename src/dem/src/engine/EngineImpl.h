@@ -174,8 +174,11 @@ public:
     void setFluid(const UniformGrid& grid, const FluidFields& fluid) override;
     void clearFluid() override { fluid_.active = false; }
     void depositFluidReaction(const UniformGrid& grid, double* reaction) const override;
-    //- Points a copy of fluid_ at the fields setFluid copied (kernels get raw pointers).
-    void pointFluidAt(FluidView& fluid) const;
+    //- Each grain's fluid load (fFluidLoad) from the fields setFluid copied, at its position
+    //- now: by setFluid, and again for grains added or imported while a fluid is set.
+    void storeFluidLoads();
+    //- Points a copy of fluid_ at the grains' fluid loads (kernels get raw pointers).
+    void pointFluidAt(FluidLoadView& fluid) const;
     //- The fluid force per grain as the next step applies it (read-back and reaction).
     GrainFluidForce grainFluidForce() const;
 
@@ -510,15 +513,16 @@ private:
     std::vector<WallState> walls_;
     Vec<int> cellKey_, order_, cellStart_, counts_;
     //- FluidFields as copied by setFluid: f (3 per cell), beta (1 per cell, empty: no drag),
-    //- u (3 per cell)
+    //- u (3 per cell); read into the grains' loads once per fluid step (storeFluidLoads)
     Vec<double> fluidForceDensity_, fluidDrag_, fluidVelocity_;
+    GridView fluidGrid_;
     //- Scratch of the read-back and coupling calls (deposit each fluid step, grains() at each
     //- diagnostics write): kept, so those calls allocate no device memory once sized.
     mutable Vec<double> depositSolid_, depositMomentum_, depositPorosity_, fluidForceScratch_,
         reactionScratch_;
     mutable Vec<double> overlapScratch_, depthScratch_;
     mutable Vec<int> contactScratch_;
-    FluidView fluid_;
+    FluidLoadView fluid_;
     bool needRebuild_ = true;
     bool forcesStale_ = true;
     int grainsAtLastBuild_ = 0;

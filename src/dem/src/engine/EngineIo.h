@@ -127,6 +127,8 @@ void EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
     grains_.append(k, reals, ints);
     needRebuild_ = true;
     forcesStale_ = true;
+    if (fluid_.active) // the new grains feel the fluid set before they came
+        storeFluidLoads();
 }
 
 template <class Exec>
@@ -401,25 +403,42 @@ void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const FluidFields& flui
         fluidDrag_.clear();
         fluidVelocity_.clear();
     }
-    fluid_.grid = g;
+    fluidGrid_ = g;
     fluid_.density = fluid.buoyancyDensity;
     fluid_.active = true;
+    storeFluidLoads();
 }
 
 template <class Exec>
-void EngineImpl<Exec>::pointFluidAt(FluidView& fluid) const
+void EngineImpl<Exec>::storeFluidLoads()
 {
-    fluid.forceDensity = thrust::raw_pointer_cast(fluidForceDensity_.data());
+    const int n = grains_.size();
+    if (n == 0)
+        return;
+    FluidFieldsView fields;
+    fields.grid = fluidGrid_;
+    fields.forceDensity = thrust::raw_pointer_cast(fluidForceDensity_.data());
     const bool drag = !fluidDrag_.empty();
-    fluid.dragCoefficient = drag ? thrust::raw_pointer_cast(fluidDrag_.data()) : nullptr;
-    fluid.velocity = drag ? thrust::raw_pointer_cast(fluidVelocity_.data()) : nullptr;
+    fields.dragCoefficient = drag ? thrust::raw_pointer_cast(fluidDrag_.data()) : nullptr;
+    fields.velocity = drag ? thrust::raw_pointer_cast(fluidVelocity_.data()) : nullptr;
+    Exec::forEach(n, StoreFluidLoad{fields, grains_.vec3(fPosition), grains_.real(fRadius),
+                                    grains_.hasCapsules() ? grains_.real(fCoreHalfLength) : nullptr,
+                                    grains_.real(fFluidLoad), n});
+}
+
+template <class Exec>
+void EngineImpl<Exec>::pointFluidAt(FluidLoadView& fluid) const
+{
+    EngineImpl& e = self();
+    fluid.load = e.grains_.real(fFluidLoad);
+    fluid.n = grains_.size();
 }
 
 template <class Exec>
 GrainFluidForce EngineImpl<Exec>::grainFluidForce() const
 {
     EngineImpl& e = self();
-    FluidView fluid = fluid_;
+    FluidLoadView fluid = fluid_;
     pointFluidAt(fluid);
     return GrainFluidForce{e.grains_.vec3(fPosition),
                            e.grains_.vec3(fVelocity),

@@ -73,7 +73,8 @@ SystemState EngineImpl<Exec>::exportState() const
     using namespace stateDetail;
     SystemState s;
     for (int f = 0; f < kRealFieldCount; ++f)
-        s.reals[std::string("grain.") + realFieldInfo(f).name] = grains_.hostReal(f);
+        if (!realFieldInfo(f).transient)
+            s.reals[std::string("grain.") + realFieldInfo(f).name] = grains_.hostReal(f);
     for (int f = 0; f < kIntFieldCount; ++f)
     {
         const std::vector<int> v = grains_.hostInt(f);
@@ -160,6 +161,11 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     }
     for (int f = 0; f < kRealFieldCount; ++f)
     {
+        if (realFieldInfo(f).transient)
+        {
+            grains_.setReal(f, std::vector<double>(std::size_t(realFieldInfo(f).components) * n));
+            continue;
+        }
         const std::string name = std::string("grain.") + realFieldInfo(f).name;
         const auto sphereDefault = spheres.find(name);
         const std::vector<double>& v =
@@ -235,6 +241,8 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     forcesStale_ = counters[4] != 0;
     oldPairs_ = PairStorage<Exec>();
     importBonds(s);
+    if (fluid_.active) // the imported grains feel the fluid set before
+        storeFluidLoads();
 }
 
 template <class Exec>

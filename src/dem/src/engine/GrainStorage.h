@@ -42,6 +42,7 @@ enum RealField
     fAngularMomentum,  //!< global angular momentum (integrated for capsules; 0 for spheres)
     fWallStateEnd,     //!< interleaved, a capsule's second end (GrainView::wallStateEnd)
     fHalfAxisAtBuild,  //!< half-axis vector at the last rebuild (skin check with rotation)
+    fFluidLoad,        //!< (V (f + beta u), V beta) of the current fluid step (StoreFluidLoad)
     kRealFieldCount
 };
 
@@ -59,6 +60,8 @@ struct FieldInfo
     const char* name;
     int components;
     bool interleaved = false;
+    //- Derived each fluid step, not state: not exported, zero on import (setFluid makes it).
+    bool transient = false;
 };
 
 inline const FieldInfo& realFieldInfo(int f)
@@ -81,7 +84,8 @@ inline const FieldInfo& realFieldInfo(int f)
                                                      {"principalInertia", 3},
                                                      {"angularMomentum", 3},
                                                      {"wallStateEnd", kWallStateComponents, true},
-                                                     {"halfAxisAtBuild", 3}};
+                                                     {"halfAxisAtBuild", 3},
+                                                     {"fluidLoad", 4, false, true}};
     return table[f];
 }
 

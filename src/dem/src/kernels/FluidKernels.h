@@ -1,6 +1,7 @@
 // FluidKernels.h
 // The fluid's load on the grains (dem::FluidFields, doc/EQUATIONS.md 7), written once for both
-// backends: the force on one grain (FluidView, added per grain by GrainForceKernel), its
+// backends: each grain's load taken from the cell fields once per fluid step (StoreFluidLoad),
+// the force it makes in every DEM step (FluidLoadView, added per grain by GrainForceKernel), its
 // read-back for every grain, and the grains' reaction deposited on the fluid's cells.
 #pragma once
 
@@ -15,49 +16,90 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-//- The fluid's force on a grain of solid volume V (grainVolume: a capsule's true volume) at x
-//- with velocity v (dem::FluidFields): F = V (f(x) + beta(x) (u(x) - v) - rho_f g), the cell
-//- fields interpolated at the centre with the deposit's trilinear weights. It acts at the
-//- centre: no torque, also for a capsule in a field that varies along its axis
-//- (doc/EQUATIONS.md 7). Without drag the sum is V (f - rho_f g) exactly as written, so that
-//- f = -grad p gives the bits of -V (grad p + rho_f g).
-struct FluidView
+//- The cell fields of dem::FluidFields as the backend holds them (FluidFields: f, and beta
+//- with u for a drag law).
+struct FluidFieldsView
 {
-    bool active = false;
     GridView grid;
     const double* forceDensity = nullptr;    //!< f, 3 per cell interleaved
     const double* dragCoefficient = nullptr; //!< beta, 1 per cell; nullptr: no drag
     const double* velocity = nullptr;        //!< u, 3 per cell interleaved
-    double density = 0;                      //!< rho_f
+};
 
-    DEM_HD Vector3d force(const Vector3d& x, const Vector3d& v, double volume,
-                          const Vector3d& gvec) const
+//- Grain i's fluid load for the coming fluid step, from the cell fields at its centre with the
+//- deposit's trilinear weights (one stencil for all fields): load = (V (f + beta u), V beta)
+//- with V its true volume (grainVolume). Why per fluid step and not per DEM step: the fields
+//- are constant over a fluid step, a grain moves a tiny fraction of a cell within it, and the
+//- interpolation cost as much as a fifth of a sphere's DEM step; only the drag's velocity term
+//- needs the grain's current state and stays per DEM step (FluidLoadView).
+struct StoreFluidLoad
+{
+    FluidFieldsView fields;
+    Vec3Array position;
+    const double* radius;
+    const double* coreHalfLength; //!< nullptr: every grain is a sphere
+    double* load;                 //!< 4 per grain, component-blocked (stride n)
+    long n;
+
+    DEM_HD void operator()(int i) const
     {
-        if (!active)
-            return Vector3d::Zero();
-        Vector3d perVolume = interpolateVector(grid, forceDensity, x);
-        if (dragCoefficient)
-            perVolume += interpolateScalar(grid, dragCoefficient, x) *
-                         (interpolateVector(grid, velocity, x) - v);
-        return volume * (perVolume - density * gvec);
+        const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
+        const TrilinearStencil s = trilinearStencil(fields.grid, position(i));
+        Vector3d source = Vector3d::Zero(), u = Vector3d::Zero();
+        double beta = 0.0;
+        for (int c = 0; c < 8; ++c)
+        {
+            const double* f = fields.forceDensity + 3 * s.cell[c];
+            source += s.weight[c] * Vector3d(f[0], f[1], f[2]);
+            if (fields.dragCoefficient)
+            {
+                const double* v = fields.velocity + 3 * s.cell[c];
+                beta += s.weight[c] * fields.dragCoefficient[s.cell[c]];
+                u += s.weight[c] * Vector3d(v[0], v[1], v[2]);
+            }
+        }
+        source += beta * u;
+        for (int d = 0; d < 3; ++d)
+            load[d * n + i] = volume * source[d];
+        load[3 * n + i] = volume * beta;
     }
 };
 
-//- The fluid force on grain i as the next step applies it (FluidView at its stored position
-//- and velocity, its true volume): shared by the read-back and the reaction deposit.
+//- The fluid's force on grain i (solid volume V, velocity v), doc/EQUATIONS.md 7:
+//- F = V (f + beta (u - v) - rho_f g) = load_F - load_beta v - rho_f V g, with f, beta and u
+//- taken where the grain was when the fields were handed over (StoreFluidLoad), v and g of
+//- the current step. It acts at the centre: no torque, also for a capsule in a field that
+//- varies along its axis.
+struct FluidLoadView
+{
+    bool active = false;
+    const double* load = nullptr; //!< StoreFluidLoad's, 4 per grain, stride n
+    long n = 0;
+    double density = 0; //!< rho_f
+
+    DEM_HD Vector3d force(int i, const Vector3d& v, double volume, const Vector3d& gvec) const
+    {
+        if (!active)
+            return Vector3d::Zero();
+        return Vector3d(load[i], load[n + i], load[2 * n + i]) - load[3 * n + i] * v -
+               (density * volume) * gvec;
+    }
+};
+
+//- The fluid force on grain i as the next step applies it (FluidLoadView at its stored velocity,
+//- its true volume): shared by the read-back and the reaction deposit.
 struct GrainFluidForce
 {
     Vec3Array position, velocity;
     const double* radius;
     const double* coreHalfLength; //!< nullptr: every grain is a sphere
-    FluidView fluid;
+    FluidLoadView fluid;
     double gravity[3];
 
     DEM_HD Vector3d operator()(int i) const
     {
         const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
-        return fluid.force(position(i), velocity(i), volume,
-                           Vector3d(gravity[0], gravity[1], gravity[2]));
+        return fluid.force(i, velocity(i), volume, Vector3d(gravity[0], gravity[1], gravity[2]));
     }
 };
 

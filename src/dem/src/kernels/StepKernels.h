@@ -125,7 +125,7 @@ struct GrainForceKernel
     WallLaw wallLaw, frictionlessWallLaw;
     double gravity[3];
     double drag;
-    FluidView fluid;
+    FluidLoadView fluid;
 
     //- Sets force and torque to grain i's loads (updates its wall history and wall forces).
     DEM_HD void add(int i, Vector3d& force, Vector3d& torque) const
@@ -139,7 +139,7 @@ struct GrainForceKernel
         torque = Vector3d::Zero();
         if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
             force += fluid.force(
-                x, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
+                i, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
         if constexpr (Shapes::kCapsules)
             addEndContacts(i, x, v, omega, r, force, torque);
         else
