@@ -139,12 +139,13 @@ const Foam::dictionary& Foam::inputChecks::checkKnownEntries
             message<< ' ' << name.c_str();
         }
 
+        // The header as OpenFOAM's own errors write it (the scoped name)
         FatalIOError
         (
             FUNCTION_NAME,
             __FILE__,
             __LINE__,
-            file,
+            dict.name(),
             line,
             e.endLineNumber() < 0 ? line : e.endLineNumber()
         )   << message.str().c_str() << nl << exit(FatalIOError);
