@@ -155,6 +155,24 @@ const Foam::dictionary& Foam::inputChecks::checkKnownEntries
 }
 
 
+const Foam::wordList& Foam::inputChecks::functionObjectEntryNames()
+{
+    // functionObject, functionObjectList, timeControl (write..., execute...
+    // and the older output... controls), timeControlFunctionObject,
+    // regionFunctionObject, writeFile
+    static const wordList names
+    ({
+        "type", "libs", "functionObjectLibs", "enabled", "log", "region",
+        "subRegion", "timeStart", "timeEnd", "triggerStart", "triggerEnd",
+        "controlMode", "deltaTCoeff", "nStepsToStartTimeChange",
+        "writeControl", "writeInterval", "executeControl", "executeInterval",
+        "outputControl", "outputInterval", "writePrecision", "writeToFile",
+        "useUserTime"
+    });
+    return names;
+}
+
+
 const Foam::dictionary& Foam::inputChecks::checkModelEntries
 (
     const dictionary& dict,
