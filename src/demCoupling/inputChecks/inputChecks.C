@@ -102,13 +102,19 @@ const Foam::dictionary& Foam::inputChecks::checkKnownEntries
             continue;
         }
 
-        // The file is the top dictionary's name; a sub-dictionary's name
-        // adds its scope, '.'-separated (demProperties.walls.bottom)
-        const fileName& file = dict.topDict().name();
+        // A sub-dictionary's name is the file's path and its scope,
+        // '.'-separated (.../constant/demProperties.walls.bottom); split
+        // after the path's last '/' (a copy, as a function object gets
+        // its dictionary, has no parent to ask for the file)
+        const std::string& scoped = dict.name();
+        const std::size_t slash = scoped.rfind('/');
+        const std::size_t dot =
+            scoped.find('.', slash == std::string::npos ? 0 : slash);
+        const string file(scoped.substr(0, dot));
         string scope;
-        if (&dict != &dict.topDict() && dict.name().size() > file.size())
+        if (dot != std::string::npos)
         {
-            scope = dict.name().substr(file.size() + 1);
+            scope = scoped.substr(dot + 1);
             scope.replaceAll(".", "/");
         }
 
