@@ -65,18 +65,9 @@ void setMechanism
 
 void Foam::bondProperties::checkEntryNames(const dictionary& bonds)
 {
-    for (const entry& e : bonds)
-    {
-        const word& key = e.keyword();
-        if (!mechanismNames.found(key) && !constantNames.found(key))
-        {
-            FatalIOErrorInFunction(bonds)
-                << "Unknown entry '" << key << "' in " << bonds.name()
-                << "; valid entries: " << constantNames << " and the"
-                << " mechanisms " << mechanismNames << nl
-                << exit(FatalIOError);
-        }
-    }
+    wordList names(constantNames);
+    names.append(mechanismNames);
+    inputChecks::checkKnownEntries(bonds, names);
 }
 
 

@@ -8,6 +8,22 @@
 #include "fvMesh.H"
 #include "Time.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of darcyProperties: the fluid's, read here, and the
+//- sub-dictionaries of the models (permeabilityModel::New,
+//- solidPhase::New, which check their own entries)
+const Foam::wordList darcyPropertiesNames
+({
+    "mu", "beta", "rho", "permeability", "solidPhase"
+});
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::darcyFluid::darcyFluid(const fvMesh& mesh)
@@ -23,7 +39,15 @@ Foam::darcyFluid::darcyFluid(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
-    mu_(inputChecks::getPositive(*this, "mu", dimDynamicViscosity)),
+    mu_
+    (
+        inputChecks::getPositive
+        (
+            inputChecks::checkKnownEntries(*this, darcyPropertiesNames),
+            "mu",
+            dimDynamicViscosity
+        )
+    ),
     beta_(inputChecks::getPositive(*this, "beta", dimless/dimPressure)),
     rho_(inputChecks::getNonNegative(*this, "rho", dimDensity))
 {

@@ -28,6 +28,56 @@ static const Enum<dem::GrainFlag> grainFlagNames
     { dem::GrainFlag::translationOnly, "translationOnly" },
 });
 
+//- The entries of demProperties: read by parameters() (backend ...
+//- density, contact, wallContact), demWalls (gravity, walls),
+//- applyGrainFlags (grainFlags), the constructor and bondProperties
+//- (output, bonds) and grainStartState (wrapGrains, maxInitialOverlap)
+static const wordList demPropertiesNames
+({
+    "backend", "threads", "timeStep", "maxTimeStepFraction",
+    "neighbourSkin", "viscousDrag", "density", "gravity", "gravityCoeffs",
+    "contact", "wallContact", "walls", "grainFlags", "output", "bonds",
+    "wrapGrains", "maxInitialOverlap"
+});
+
+//- The entries of 'output': format and capsuleSurfaces read by the
+//- constructor, bonds by bondProperties
+static const wordList outputNames({"format", "capsuleSurfaces", "bonds"});
+
+//- The entries of each 'grainFlags' sub-dictionary (applyGrainFlags)
+static const wordList grainFlagEntryNames
+({
+    "flag", "zMin", "zMax", "velocity"
+});
+
+//- properties, after checking that its top level, 'output' and each
+//- 'grainFlags' sub-dictionary hold only entries of the lists above
+//- ('contact', 'wallContact', 'bonds' and 'walls' are checked where they
+//- are read)
+static const dictionary& checkedEntries(const dictionary& properties)
+{
+    inputChecks::checkKnownEntries(properties, demPropertiesNames);
+    if (properties.isDict("output"))
+    {
+        inputChecks::checkKnownEntries
+        (
+            properties.subDict("output"),
+            outputNames
+        );
+    }
+    if (properties.isDict("grainFlags"))
+    {
+        for (const entry& e : properties.subDict("grainFlags"))
+        {
+            if (e.isDict())
+            {
+                inputChecks::checkKnownEntries(e.dict(), grainFlagEntryNames);
+            }
+        }
+    }
+    return properties;
+}
+
 } // End namespace Foam
 
 
@@ -56,7 +106,7 @@ Foam::demSettings::demSettings
             IOobject::NO_WRITE
         )
     ),
-    bonds_(properties_),
+    bonds_(checkedEntries(properties_)),
     walls_(properties_, grid, mesh.time().value()),
     asciiOutput_(false),
     surfaceChoiceGiven_(false),

@@ -35,6 +35,15 @@ static const Enum<vector::components> wallAxisNames
     { vector::Z, "z" },
 });
 
+//- The entries of a wall's dictionary, as readWall reads them
+//- (normalStress: a Function1 of time, normalStressCoeffs its
+//- coefficients in the older form)
+static const wordList wallEntryNames
+({
+    "axis", "side", "mode", "position", "velocity", "frictional", "mass",
+    "normalStress", "normalStressCoeffs"
+});
+
 //- The choice of entry key of wall 'wall' (deflt when absent, unless deflt
 //- is empty: then it is required); anything else stops naming the file,
 //- the entry, the value found and the valid choices
@@ -84,6 +93,8 @@ dem::WallSpec Foam::demWalls::readWall
     const scalar t
 )
 {
+    inputChecks::checkKnownEntries(dict, wallEntryNames);
+
     dem::WallSpec w;
     w.axis = readChoice(wallAxisNames, dict, "axis", name, "z");
     w.side = readChoice(wallSideNames, dict, "side", name);

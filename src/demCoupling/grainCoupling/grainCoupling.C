@@ -18,6 +18,12 @@ Foam::grainCoupling::porosityRateFormNames
 });
 
 
+const Foam::wordList Foam::grainCoupling::entryNames
+({
+    "porosityMin", "porosityMax", "topPressure", "porosityRate", "fluidForce"
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::grainCoupling::stepGrains()

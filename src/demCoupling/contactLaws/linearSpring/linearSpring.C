@@ -22,6 +22,15 @@ namespace contactLaws
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactLaws::linearSpring::linearSpring(const dictionary& dict)
+:
+    contactLaw
+    (
+        dict,
+        {
+            "normalStiffness", "tangentialStiffness", "normalDamping",
+            "tangentialDamping", "friction"
+        }
+    )
 {
     material_.law = dem::ContactLaw::linearSpring;
     material_.normalStiffness =

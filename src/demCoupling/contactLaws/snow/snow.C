@@ -22,6 +22,15 @@ namespace contactLaws
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactLaws::snow::snow(const dictionary& dict)
+:
+    contactLaw
+    (
+        dict,
+        {
+            "youngsModulus", "tangentialToNormalStiffness",
+            "normalDampingRatio", "tangentialDampingRatio", "friction"
+        }
+    )
 {
     material_.law = dem::ContactLaw::snow;
     material_.youngsModulus = inputChecks::getPositive(dict, "youngsModulus");

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainDiagnostics.H"
+#include "inputChecks.H"
 #include "demLibraryCall.H"
 #include "demCloud.H"
 #include "volFields.H"
@@ -107,6 +108,12 @@ Foam::functionObjects::grainDiagnostics::grainDiagnostics
 
 bool Foam::functionObjects::grainDiagnostics::read(const dictionary& dict)
 {
+    // No entries of its own
+    inputChecks::checkKnownEntries
+    (
+        dict,
+        inputChecks::functionObjectEntryNames()
+    );
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
     return true;

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "horizontalProfiles.H"
+#include "inputChecks.H"
 #include "demCloud.H"
 #include "volFields.H"
 #include "fvcGrad.H"
@@ -58,7 +59,14 @@ Foam::functionObjects::horizontalProfiles::horizontalProfiles
 )
 :
     fvMeshFunctionObject(name, runTime, dict)
-{}
+{
+    // No entries of its own
+    inputChecks::checkKnownEntries
+    (
+        dict,
+        inputChecks::functionObjectEntryNames()
+    );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallStress.H"
+#include "inputChecks.H"
 #include "demLibraryCall.H"
 #include "demCloud.H"
 #include "wallEnclosure.H"
@@ -64,6 +65,12 @@ Foam::functionObjects::wallStress::wallStress
 
 bool Foam::functionObjects::wallStress::read(const dictionary& dict)
 {
+    // No entries of its own
+    inputChecks::checkKnownEntries
+    (
+        dict,
+        inputChecks::functionObjectEntryNames()
+    );
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
     return true;

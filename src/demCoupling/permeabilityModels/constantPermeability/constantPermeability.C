@@ -32,7 +32,7 @@ Foam::permeabilityModels::constantPermeability::constantPermeability
     const dictionary& dict
 )
 :
-    permeabilityModel(dict),
+    permeabilityModel(dict, {"k"}),
     k_(inputChecks::getPositive(dict, "k"))
 {
     Info<< "    k = " << k_ << " m^2" << endl;

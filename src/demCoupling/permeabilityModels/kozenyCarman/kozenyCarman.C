@@ -25,11 +25,16 @@ namespace permeabilityModels
 Foam::permeabilityModels::kozenyCarman::kozenyCarman
 (
     const dictionary& dict,
-    const scalar kc
+    const word& prefactorEntry,
+    scalar (*kcOf)(const dictionary&)
 )
 :
-    permeabilityModel(dict),
-    kc_(kc),
+    permeabilityModel
+    (
+        dict,
+        {prefactorEntry, "porosityMin", "porosityMax", "kMax"}
+    ),
+    kc_(kcOf(dict)),
     porosityMin_(inputChecks::getInOpenRange(dict, "porosityMin", 0, 1)),
     porosityMax_(inputChecks::getInOpenRange(dict, "porosityMax", 0, 1)),
     kMax_(dict.found("kMax") ? inputChecks::getPositive(dict, "kMax") : GREAT)
@@ -55,7 +60,12 @@ Foam::permeabilityModels::kozenyCarman::kozenyCarman
 
 Foam::permeabilityModels::kozenyCarman::kozenyCarman(const dictionary& dict)
 :
-    kozenyCarman(dict, inputChecks::getPositive(dict, "kc"))
+    kozenyCarman
+    (
+        dict,
+        "kc",
+        [](const dictionary& d) { return inputChecks::getPositive(d, "kc"); }
+    )
 {}
 
 

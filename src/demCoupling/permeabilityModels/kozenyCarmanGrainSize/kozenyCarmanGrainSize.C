@@ -31,7 +31,15 @@ Foam::permeabilityModels::kozenyCarmanGrainSize::kozenyCarmanGrainSize
     const dictionary& dict
 )
 :
-    kozenyCarman(dict, sqr(inputChecks::getPositive(dict, "d"))/180.0)
+    kozenyCarman
+    (
+        dict,
+        "d",
+        [](const dictionary& d)
+        {
+            return sqr(inputChecks::getPositive(d, "d"))/180.0;
+        }
+    )
 {}
 
 

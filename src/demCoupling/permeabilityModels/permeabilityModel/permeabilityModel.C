@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "permeabilityModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -16,9 +17,13 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::permeabilityModel::permeabilityModel(const dictionary& dict)
+Foam::permeabilityModel::permeabilityModel
+(
+    const dictionary& dict,
+    const wordList& entryNames
+)
 :
-    dict_(dict)
+    dict_(inputChecks::checkModelEntries(dict, entryNames))
 {}
 
 

@@ -26,7 +26,7 @@ Foam::solidPhases::demGrains::demGrains
     const dictionary& dict
 )
 :
-    solidPhase(mesh, dict),
+    solidPhase(mesh, dict, grainCoupling::entryNames),
     coupling_(mesh, dict, true, porosity_, porosityRate_, Us_)
 {}
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidPhase.H"
+#include "inputChecks.H"
 #include "latestCompleteTime.H"
 #include "zeroGradientFvPatchFields.H"
 
@@ -18,10 +19,15 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::solidPhase::solidPhase(const fvMesh& mesh, const dictionary& dict)
+Foam::solidPhase::solidPhase
+(
+    const fvMesh& mesh,
+    const dictionary& dict,
+    const wordList& entryNames
+)
 :
     mesh_(mesh),
-    dict_(dict),
+    dict_(inputChecks::checkModelEntries(dict, entryNames)),
     porosity_
     (
         IOobject

@@ -26,7 +26,7 @@ Foam::solidPhases::staticPorosity::staticPorosity
     const dictionary& dict
 )
 :
-    solidPhase(mesh, dict)
+    solidPhase(mesh, dict, wordList())
 {
     if (!porosity_.typeHeaderOk<volScalarField>(true))
     {

@@ -47,7 +47,9 @@ Foam::solidPhases::uniformPorosity::uniformPorosity
     const dictionary& dict
 )
 :
-    solidPhase(mesh, dict),
+    // porosity: a Function1 of time (porosityCoeffs: its coefficients in
+    // the older form)
+    solidPhase(mesh, dict, {"porosity", "porosityCoeffs"}),
     history_(Function1<scalar>::New("porosity", dict))
 {
     porosity_ == dimensionedScalar("porosity", dimless, porosityAt(mesh.time().value()));

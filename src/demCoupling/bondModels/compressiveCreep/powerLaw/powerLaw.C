@@ -23,6 +23,7 @@ namespace bondCompressiveCreepModels
 
 Foam::bondCompressiveCreepModels::powerLaw::powerLaw(const dictionary& dict)
 :
+    bondCompressiveCreepModel(dict, {"prefactor", "activationEnergy"}),
     prefactor_
     (
         inputChecks::getPositiveOrDefault

@@ -23,6 +23,7 @@ namespace bondCreepModels
 
 Foam::bondCreepModels::maxwell::maxwell(const dictionary& dict)
 :
+    bondCreepModel(dict, {"contactViscosity", "shear", "twist", "bend"}),
     contactViscosity_(inputChecks::getPositive(dict, "contactViscosity")),
     shear_(dict.getOrDefault<bool>("shear", true)),
     twist_(dict.getOrDefault<bool>("twist", true)),

@@ -24,6 +24,7 @@ namespace bondFormationModels
 
 Foam::bondFormationModels::frozenOnContact::frozenOnContact(const dictionary& dict)
 :
+    bondFormationModel(dict, {"areaFraction", "interval", "seed"}),
     areaFraction_
     (
         dict.getOrDefault<FixedList<scalar, 2>>

@@ -22,6 +22,8 @@ namespace bondSinteringModels
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::bondSinteringModels::pressureSintering::pressureSintering(const dictionary& dict)
+:
+    bondSinteringModel(dict, wordList())
 {}
 
 

@@ -52,6 +52,17 @@ Foam::bondStrengthModel::fracture::fracture(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::wordList Foam::bondStrengthModel::fracture::withEntryNames
+(
+    const wordList& modelNames
+)
+{
+    wordList names(modelNames);
+    names.append(wordList({"softeningRatio", "brokenFraction"}));
+    return names;
+}
+
+
 void Foam::bondStrengthModel::fracture::set(dem::BondParameters& bonds) const
 {
     bonds.softeningRatio = softeningRatio_;

@@ -44,6 +44,11 @@ Foam::scalar nonNegative(const Foam::dictionary& dict, const Foam::word& key)
 
 Foam::bondStrengthModels::constantStrength::constantStrength(const dictionary& dict)
 :
+    bondStrengthModel
+    (
+        dict,
+        fracture::withEntryNames({"tensileStrength", "shearStrength"})
+    ),
     tensileStrength_(nonNegative(dict, "tensileStrength")),
     shearStrength_(nonNegative(dict, "shearStrength")),
     fracture_(dict)

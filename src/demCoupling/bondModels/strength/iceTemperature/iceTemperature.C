@@ -23,6 +23,7 @@ namespace bondStrengthModels
 
 Foam::bondStrengthModels::iceTemperature::iceTemperature(const dictionary& dict)
 :
+    bondStrengthModel(dict, fracture::withEntryNames({"scale"})),
     scale_(inputChecks::getPositiveOrDefault(dict, "scale", 1)),
     fracture_(dict)
 {}
