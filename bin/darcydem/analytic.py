@@ -41,29 +41,47 @@ def degree_of_consolidation(Tv, terms=200):
     return 1 - np.sum(2 / M**2 * np.exp(-M**2 * Tv), axis=1)
 
 
-def consolidation_coefficient(k, mu, E_oed, porosity, beta):
-    """c_v of a DEM-Darcy packing in which the fluid acts on the grains by
-    -V grad p (Damsgaard et al. 2015, eq. 12). Skeleton equilibrium then
-    reads sigma' + (1 - phi) p = const, so the grains see only (1 - phi) of
-    the pore pressure gradient and
-        c_v = (k/mu) / (phi beta + (1 - phi)/E_oed),
-    which differs from the classical (k/mu)/(phi beta + 1/E_oed) by the
-    factor (1 - phi) on 1/E_oed (see tests/README.md)."""
-    return (k / mu) / (porosity * beta + (1 - porosity) / E_oed)
+FLUID_FORCES = ("pressureGradient", "darcy")
 
 
-def undrained_pressure(load, porosity, beta, E_oed):
-    """Excess pore pressure right after a load step in the same model:
-    dp = d_sigma / ((1 - phi) + phi beta E_oed)."""
-    return load / ((1 - porosity) + porosity * beta * E_oed)
+def skeleton_share(porosity, fluid_force):
+    """Share of the pore-pressure gradient the skeleton carries under the
+    fluid force model of the case (doc/EQUATIONS.md section 7): the grains'
+    equilibrium reads sigma' + a p = const with a = 1 - phi for eq. 12
+    ('pressureGradient', -V grad p per grain) and a = 1 for 'darcy' (-V grad
+    p/(1 - phi) per grain: Terzaghi's effective stress sigma' = sigma - p)."""
+    if fluid_force == "pressureGradient":
+        return 1 - np.asarray(porosity, dtype=float)
+    if fluid_force == "darcy":
+        return np.ones_like(np.asarray(porosity, dtype=float))
+    raise ValueError("fluid force model %r: no consolidation theory (valid: %s)"
+                     % (fluid_force, ", ".join(FLUID_FORCES)))
 
 
-def instantaneous_settlement(porosity, beta, E_oed):
+def consolidation_coefficient(k, mu, E_oed, porosity, beta, fluid_force="darcy"):
+    """c_v of a DEM-Darcy packing, c_v = (k/mu) / (phi beta + a/E_oed) with a
+    the skeleton's share of the pressure gradient (skeleton_share): the
+    classical (k/mu)/(phi beta + 1/E_oed) for 'darcy'; for 'pressureGradient'
+    (Damsgaard et al. 2015, eq. 12) the skeleton sees only (1 - phi) of the
+    gradient and c_v = (k/mu)/(phi beta + (1 - phi)/E_oed)."""
+    a = skeleton_share(porosity, fluid_force)
+    return (k / mu) / (porosity * beta + a / E_oed)
+
+
+def undrained_pressure(load, porosity, beta, E_oed, fluid_force="darcy"):
+    """Excess pore pressure right after a load step, dp = d_sigma / (a + phi
+    beta E_oed): d_sigma/(1 + phi beta E) for 'darcy', d_sigma/((1 - phi) +
+    phi beta E) for 'pressureGradient'."""
+    return load / (skeleton_share(porosity, fluid_force) + porosity * beta * E_oed)
+
+
+def instantaneous_settlement(porosity, beta, E_oed, fluid_force="darcy"):
     """Fraction of the final settlement reached at once on loading, while the
-    compressible pore fluid is still undrained: U0 = phi beta E/((1 - phi) +
-    phi beta E); the rest follows Terzaghi, U = U0 + (1 - U0) U(T_v)."""
+    compressible pore fluid is still undrained: U0 = phi beta E/(a + phi beta
+    E) (a = 1 for 'darcy', 1 - phi for 'pressureGradient'); the rest follows
+    Terzaghi, U = U0 + (1 - U0) U(T_v)."""
     x = porosity * beta * E_oed
-    return x / ((1 - porosity) + x)
+    return x / (skeleton_share(porosity, fluid_force) + x)
 
 
 def ramp_loaded_consolidation(Tv, Tramp, U0, terms=200):
@@ -87,11 +105,11 @@ def ramp_loaded_consolidation(Tv, Tramp, U0, terms=200):
 
 
 def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
-                          drained_top=0.0, E_top=np.inf):
+                          drained_top=0.0, E_top=np.inf, fluid_force="darcy"):
     """Consolidation of a column of layers that differ in porosity, stiffness
     and permeability: the finite-volume form, on the layers of the mesh, of
-        (phi beta + (1 - phi)/E_oed) dp/dt = d/dz(k/mu dp/dz) + (1/E_oed) dsigma/dt
-    (the grains feel -V grad p, eq. 12, as in consolidation_coefficient),
+        (phi beta + a/E_oed) dp/dt = d/dz(k/mu dp/dz) + (1/E_oed) dsigma/dt
+    (a = 1 for 'darcy', 1 - phi for eq. 12, 'pressureGradient': skeleton_share),
     closed at the base, p = 0 in the cell above the top layer. Layer i has
     thickness dz, porosity[i] and E_oed[i]; k_face[i] is the permeability
     between layer i and i + 1 (the last one towards the drained cell, whose
@@ -102,7 +120,8 @@ def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
     Returns (p[time, layer], settlement[time])."""
     porosity, E_oed, k_face = (np.asarray(a, dtype=float) for a in (porosity, E_oed, k_face))
     n = len(porosity)
-    storage = porosity * beta + (1 - porosity) / E_oed
+    a = skeleton_share(porosity, fluid_force)
+    storage = porosity * beta + a / E_oed
     cond = k_face / (mu * dz * dz)  # flux per pressure difference, per layer thickness
     A = np.zeros((n, n))
     for i in range(n):
@@ -120,6 +139,6 @@ def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
     modes = c * (load / ramp) * (np.exp(-lam * (t - t_end)) - np.exp(-lam * t)) / lam
     p = (modes @ V.T) * s
     sigma = load * t_end[:, 0] / ramp
-    settlement = dz * np.sum((sigma[:, None] - (1 - porosity) * p) / E_oed, axis=1) \
+    settlement = dz * np.sum((sigma[:, None] - a * p) / E_oed, axis=1) \
         + drained_top * sigma / E_top
     return p, settlement
