@@ -470,11 +470,11 @@ class Study:
         a1.set_ylabel("settlement / final settlement U")
         a1.set_title("Settlement; rms misfit %.3f" % cmp_["U_rmsError(0.05<=Tv<=1.5)"])
         a1.set_xlim(0, 1.5)
-        a1.legend()
         lay = getattr(self, "layered_curves", None)
         if lay:
             a1.plot(lay["Tv"], lay["U"], "r:", lw=2, label="layered column, measured E_oed, k")
             a2.plot(lay["Tp"], lay["p"], "r:", lw=2, label="layered column, measured E_oed, k")
+        a1.legend()
         a2.set_xlabel("T_v")
         a2.set_ylabel("excess pore pressure at the base / p0")
         a2.set_title("Base pressure; p0 = dsigma/(%s + phi beta E)"
