@@ -20,6 +20,7 @@ Description
 #include "grainCoupling.H"
 #include "latestCompleteTime.H"
 #include "stepTimers.H"
+#include "solverOptions.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -28,7 +29,10 @@ int main(int argc, char *argv[])
 {
     argList::addNote("DEM grains without pore fluid (dry runs)");
 
-    #include "addCheckCaseOptions.H"
+    // No -parallel and no -dry-run (addCheckCaseOptions.H not included):
+    // refused with the reason and what to do instead (solverOptions)
+    solverOptions::check(argc, argv);
+
     #include "setRootCaseLists.H"
 
     // startFrom latestTime: skip (and set aside) times a crash left
