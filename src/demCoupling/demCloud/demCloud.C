@@ -64,7 +64,8 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             const label n = system_->grainCount();
             if (settings_.surfaceOutputDefaulted() && !settings_.surfaceOutput(n))
             {
-                Info<< "    capsule surfaces (VTK/capsules_<time>.vtp) not"
+                Info<< "    capsule surfaces (" << grainWriter::outputDir
+                    << "/capsules_<time>.vtp) not"
                     << " written: " << n << " grains > "
                     << demSettings::maxDefaultSurfaceGrains
                     << "; output { capsuleSurfaces yes; } writes them"
