@@ -127,11 +127,17 @@ def read_columns(path):
     return {name: values[:, k] for k, name in enumerate(names)}
 
 
+# Folder of the grains' ParaView files (grains, capsules, bonds and their
+# series) in a case; not VTK/, which 'foamToVTK -overwrite' removes whole
+GRAINS_DIR = os.path.join("postProcessing", "grains")
+
+
 def grain_files(case, series_name="grains"):
     """(time, path) of the grains' .vtp files in the order of the VTK file
-    series <case>/VTK/grains.vtp.series (JSON) that ParaView opens
-    (series_name "capsules": the grains' surfaces, capsules_<time>.vtp)."""
-    series = os.path.join(case, "VTK", series_name + ".vtp.series")
+    series <case>/postProcessing/grains/grains.vtp.series (JSON) that
+    ParaView opens (series_name "capsules": the grains' surfaces,
+    capsules_<time>.vtp)."""
+    series = os.path.join(case, GRAINS_DIR, series_name + ".vtp.series")
     with open(series) as f:
         entries = json.load(f)["files"]
     return [(e["time"], os.path.join(os.path.dirname(series), e["name"])) for e in entries]

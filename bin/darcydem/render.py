@@ -1,7 +1,7 @@
 """Offscreen pictures of the grains with VTK (python3-vtk9): the grains'
-surfaces (VTK/capsules_<time>.vtp, capsules and spheres as they are) or,
-without capsules, Sphere glyphs of VTK/grains_<time>.vtp, as ParaView shows
-them. Debian's VTK renders offscreen only through an X display:
+surfaces (postProcessing/grains/capsules_<time>.vtp, capsules and spheres
+as they are) or, without capsules, Sphere glyphs of grains_<time>.vtp, as
+ParaView shows them. Debian's VTK renders offscreen only through an X display:
 virtual_display() starts Xvfb when none is set."""
 
 import contextlib

@@ -286,7 +286,7 @@ def test_bonds_output_can_be_switched_off():
     c.set(DEM, "output", "{ format binary; bonds no; }")
     c.run("blockMesh")
     c.run("demFoam")
-    written = sorted(os.listdir(c.file("VTK")))
-    print("VTK/:", written)
+    written = sorted(os.listdir(c.file("postProcessing/grains")))
+    print("postProcessing/grains/:", written)
     assert "grains.vtp.series" in written
     assert not any(name.startswith("bonds") for name in written)

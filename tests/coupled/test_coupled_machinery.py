@@ -63,8 +63,9 @@ def test_deposit_conserves_solid_volume_every_step():
 
 
 def test_paraview_output():
-    """VTK/grains_<time>.vtp at each write time with the documented arrays,
-    listed with their times in the file series VTK/grains.vtp.series; the
+    """postProcessing/grains/grains_<time>.vtp at each write time with the
+    documented arrays, listed with their times in the file series
+    grains.vtp.series beside them; the
     grains' count matches the input file."""
     c = short_column("vtk_output")
     c.run("darcyDemFoam")

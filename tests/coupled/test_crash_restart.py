@@ -34,7 +34,7 @@ def column(name, end=END):
 def same_files(a, b, time_name, names=RESTART_FILES):
     """Names of the files of a time that differ between two cases (bytes):
     the time's own files and the grains' ParaView file of that time."""
-    paths = [f"{time_name}/{f}" for f in names] + [f"VTK/grains_{time_name}.vtp"]
+    paths = [f"{time_name}/{f}" for f in names] + [f"postProcessing/grains/grains_{time_name}.vtp"]
     return [f for f in paths
             if not filecmp.cmp(a.file(f), b.file(f), shallow=False)]
 
@@ -91,7 +91,7 @@ def test_killed_mid_write_restarts_from_the_last_complete_time(reference, monkey
         differ = same_files(reference, c, t)
         print(f"{point}: files of {t} differing from the uninterrupted run: {differ}")
         assert differ == [], (t, differ)
-    series = "VTK/grains.vtp.series"
+    series = "postProcessing/grains/grains.vtp.series"
     assert open(c.file(series)).read() == open(reference.file(series)).read()
 
 

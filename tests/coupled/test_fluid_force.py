@@ -41,7 +41,7 @@ def held_grain(name, p_base, model="pressureGradient", porosity_max=0.9):
     # The lone grain's cells are emptier than the clamp: the porosity is
     # porosityMax everywhere, so 1 - phi in the darcy force is exact
     assert np.all(c.field("0.002", "porosity") == porosity_max)
-    return read_vtp(c.file("VTK/grains_0.002.vtp"))["fluidForce"][0]
+    return read_vtp(c.file("postProcessing/grains/grains_0.002.vtp"))["fluidForce"][0]
 
 
 def test_buoyancy_only_when_p_is_zero():

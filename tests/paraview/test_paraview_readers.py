@@ -1,8 +1,8 @@
 """A finished coupled case seen as ParaView sees it, through the VTK readers
 ParaView itself uses (README.md, "Running a tutorial and looking at it"):
 vtkOpenFOAMReader on <case>.foam for the fields and vtkXMLPolyDataReader on
-the files of the series VTK/grains.vtp.series for the grains, then the
-README's recipe (Sphere glyphs scaled by radius with factor 2, coloured by
+the files of the series postProcessing/grains/grains.vtp.series for the
+grains, then the README's recipe (Sphere glyphs scaled by radius with factor 2, coloured by
 displacement) rendered offscreen to a PNG that is checked and left in the
 run directory. Case: tests/cases/grainColumn, 256 grains settling in a
 saturated periodic column for 0.02 s, grains written in binary; and the
@@ -128,7 +128,7 @@ def test_grain_series_lists_every_write_with_all_arrays(case):
     """The series ParaView opens lists one file per write time; each, read
     by vtkXMLPolyDataReader (binary here), holds every grain of the input
     with its radius unchanged and every documented array."""
-    series = json.load(open(case.file("VTK/grains.vtp.series")))
+    series = json.load(open(case.file("postProcessing/grains/grains.vtp.series")))
     print(f"grains.vtp.series: {series}")
     assert series["file-series-version"] == "1.0"
     grains = grain_files(case.path)

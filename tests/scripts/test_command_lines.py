@@ -61,7 +61,8 @@ def test_missing_folder_is_one_line(script, folder, tmp_path):
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and "Traceback" not in r.stderr, r.stderr
     assert folder in lines[0] and script in lines[0]
-    assert any(name in lines[0] for name in ("system/controlDict", "VTK/capsules.vtp.series",
+    assert any(name in lines[0] for name in ("system/controlDict",
+                                             "postProcessing/grains/capsules.vtp.series",
                                              "constant/darcyProperties"))
     left = sorted(os.listdir(tmp_path))
     assert left == ([] if folder == "typo" else ["empty"]), left

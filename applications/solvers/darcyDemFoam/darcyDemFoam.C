@@ -39,6 +39,7 @@ Description
 #include "latestCompleteTime.H"
 #include "finiteCheck.H"
 #include "stepTimers.H"
+#include "solverOptions.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -50,9 +51,12 @@ int main(int argc, char *argv[])
         " granular material (coupled to DEM grains through solidPhase)"
     );
 
+    // No -parallel and no -dry-run (addCheckCaseOptions.H not included):
+    // refused with the reason and what to do instead (solverOptions)
+    solverOptions::check(argc, argv);
+
     #include "postProcess.H"
 
-    #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
     // startFrom latestTime: skip (and set aside) times a crash left

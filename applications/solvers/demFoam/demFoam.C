@@ -11,8 +11,9 @@ Description
     Cartesian mesh that sets the periodic box and the output grid). No pore
     fluid: no darcyProperties, no p. Used for packing preparation, dry shear
     and snow runs. Writes porosity and Us (the grains deposited on the mesh)
-    and the grains (demState, grains, VTK/grains_<time>.vtp and its series)
-    at write times.
+    and the grains (demState, grains, postProcessing/grains/grains_<time>.vtp
+    and its series) at write times. Prints every step's time, as
+    darcyDemFoam does, and the grains' progress every few seconds.
 
 \*---------------------------------------------------------------------------*/
 
@@ -20,6 +21,7 @@ Description
 #include "grainCoupling.H"
 #include "latestCompleteTime.H"
 #include "stepTimers.H"
+#include "solverOptions.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -28,7 +30,10 @@ int main(int argc, char *argv[])
 {
     argList::addNote("DEM grains without pore fluid (dry runs)");
 
-    #include "addCheckCaseOptions.H"
+    // No -parallel and no -dry-run (addCheckCaseOptions.H not included):
+    // refused with the reason and what to do instead (solverOptions)
+    solverOptions::check(argc, argv);
+
     #include "setRootCaseLists.H"
 
     // startFrom latestTime: skip (and set aside) times a crash left
@@ -92,25 +97,30 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
+    // Every fluid step prints its time, as darcyDemFoam and OpenFOAM's
+    // solvers do: a step is many DEM steps (deltaT/timeStep), so the log
+    // grows by a few lines per deltaT of simulated time, not per DEM step
     while (runTime.run())
     {
         ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
 
         grains.advance();
 
         if (runTime.writeTime())
         {
-            Info<< "Time = " << runTime.timeName() << ", "
-                << grains.cloud().system().contactCount() << " contacts, "
-                << grains.cloud().particleStepsPerSecond()
-                << " particle-steps/s" << nl << endl;
+            Info<< "Grains: " << grains.cloud().system().contactCount()
+                << " contacts, " << grains.cloud().particleStepsPerSecond()
+                << " particle-steps/s" << endl;
         }
 
         grains.write(runTime);
+
+        runTime.printExecutionTime(Info);
     }
 
     timers.printSummary(Info);
-    runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;
 
     return 0;

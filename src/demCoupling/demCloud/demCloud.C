@@ -8,6 +8,8 @@
 #include "demStart.H"
 #include "Time.H"
 
+#include <sstream>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -64,7 +66,8 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             const label n = system_->grainCount();
             if (settings_.surfaceOutputDefaulted() && !settings_.surfaceOutput(n))
             {
-                Info<< "    capsule surfaces (VTK/capsules_<time>.vtp) not"
+                Info<< "    capsule surfaces (" << grainWriter::outputDir
+                    << "/capsules_<time>.vtp) not"
                     << " written: " << n << " grains > "
                     << demSettings::maxDefaultSurfaceGrains
                     << "; output { capsuleSurfaces yes; } writes them"
@@ -90,21 +93,37 @@ void Foam::demCloud::reportProgress()
 {
     using clock = std::chrono::steady_clock;
     const auto now = clock::now();
-    if (std::chrono::duration<double>(now - lastReport_).count() < 5)
+    if
+    (
+        std::chrono::duration<double>(now - lastReport_).count()
+      < settings_.progressInterval()
+    )
     {
         return;
     }
     lastReport_ = now;
 
+    // This run's share, from its start time: after a restart t/endTime
+    // would count the earlier runs' time as done. t as the printed name
+    // reads (evolve), so that the last step shows 100 %, not 99 % of a
+    // running sum of time steps short of endTime in the last bit
     const Time& runTime = mesh_.time();
+    scalar t = runTime.value();
+    readScalar(runTime.timeName(), t);
     const scalar elapsed = std::chrono::duration<double>(now - wallStart_).count();
-    const scalar done = runTime.value() - simStart_;
+    const scalar done = t - simStart_;
     const scalar total = runTime.endTime().value() - simStart_;
+    const scalar fraction = total > 0 ? done/total : 1;
     const scalar left = done > 0 ? elapsed*(total - done)/done : 0;
 
+    // The rate to 3 digits, whatever writePrecision sets Info's to
+    std::ostringstream rate;
+    rate.precision(3);
+    rate<< particleStepsPerSecond();
+
     Info<< "Progress: t = " << runTime.timeName() << " s, "
-        << label(100*(runTime.value()/runTime.endTime().value()))
-        << " %, " << particleStepsPerSecond() << " particle-steps/s, "
+        << label(100*fraction) << " %, "
+        << rate.str().c_str() << " particle-steps/s, "
         << "about " << label(left) << " s left" << endl;
 }
 

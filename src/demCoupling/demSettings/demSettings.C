@@ -40,9 +40,12 @@ static const wordList demPropertiesNames
     "wrapGrains", "maxInitialOverlap"
 });
 
-//- The entries of 'output': format and capsuleSurfaces read by the
-//- constructor, bonds by bondProperties
-static const wordList outputNames({"format", "capsuleSurfaces", "bonds"});
+//- The entries of 'output': format, capsuleSurfaces and progressInterval
+//- read by the constructor, bonds by bondProperties
+static const wordList outputNames
+({
+    "format", "capsuleSurfaces", "bonds", "progressInterval"
+});
 
 //- The entries of each 'grainFlags' sub-dictionary (applyGrainFlags)
 static const wordList grainFlagEntryNames
@@ -110,7 +113,8 @@ Foam::demSettings::demSettings
     walls_(properties_, grid, mesh.time().value()),
     asciiOutput_(false),
     surfaceChoiceGiven_(false),
-    surfaceOutput_(true)
+    surfaceOutput_(true),
+    progressInterval_(5)
 {
     if (properties_.found("output"))
     {
@@ -131,6 +135,18 @@ Foam::demSettings::demSettings
         if (surfaceChoiceGiven_)
         {
             surfaceOutput_ = output.get<bool>("capsuleSurfaces");
+        }
+        // Wall-clock seconds between progress lines; 0: every fluid step
+        progressInterval_ =
+            output.getOrDefault<scalar>("progressInterval", progressInterval_);
+        if (progressInterval_ < 0)
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'output/progressInterval' in "
+                << properties_.name() << " is " << progressInterval_
+                << "; it must be >= 0 (seconds of wall time between progress"
+                << " lines, 0: every fluid step)" << nl
+                << exit(FatalIOError);
         }
     }
 }

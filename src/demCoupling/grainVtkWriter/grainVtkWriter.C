@@ -6,10 +6,13 @@
 #include "grainVtkWriter.H"
 #include "atomicFile.H"
 #include "OFstream.H"
+#include "OStringStream.H"
+#include "Time.H"
 #include "foamVtkSeriesWriter.H"
 #include "OSspecific.H"
 
 #include <array>
+#include <sstream>
 
 #include <vtkCapsuleSource.h>
 #include <vtkCellArray.h>
@@ -316,14 +319,58 @@ void Foam::grainVtkWriter::writeSeries
     series.load(seriesPath, true, t);
     series.append(t, vtp);
 
+    // The series as vtk::seriesWriter prints it, times to the last bit
+    OStringStream exact;
+    exact.precision(17);
+    series.print(exact);
+
     // Whole or not at all (temporary renamed into place, see atomicFile)
     const atomicFile file(seriesPath);
     {
         OFstream os(file.tmpPath());
-        os.precision(17);   // times round-trip exactly, as the time names
-        series.print(os);
+        os  << timesAsNames(exact.str()).c_str();
     }
     file.commit();
+}
+
+
+Foam::string Foam::grainVtkWriter::timesAsNames(const string& json)
+{
+    // Each entry is one line: { "name" : "<file>", "time" : <value> }.
+    // The value becomes the time's directory name (Time::timeName: the
+    // case's timeFormat and timePrecision), as the user and ParaView's
+    // OpenFOAM reader see the time: 0.03, not 0.029999999999999999 (the
+    // double nearest 0.03 in 17 digits). Entries read back from an
+    // earlier run's series are named the same way
+    static const std::string key("\"time\" : ");
+    std::istringstream in(json);
+    std::ostringstream out;
+    std::string line;
+    while (std::getline(in, line))
+    {
+        const auto begin = line.find(key);
+        const auto end =
+        (
+            begin == std::string::npos
+          ? std::string::npos
+          : line.find(' ', begin + key.size())
+        );
+        if (end != std::string::npos)
+        {
+            const std::string value
+            (
+                line.substr(begin + key.size(), end - begin - key.size())
+            );
+            line.replace
+            (
+                begin + key.size(),
+                value.size(),
+                Time::timeName(readScalar(value))
+            );
+        }
+        out << line << '\n';
+    }
+    return out.str();
 }
 
 

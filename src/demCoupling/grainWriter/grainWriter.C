@@ -14,6 +14,11 @@
 #include "bondVtkWriter.H"
 #include "OSspecific.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::fileName Foam::grainWriter::outputDir("postProcessing/grains");
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::grainWriter::grainWriter
@@ -46,14 +51,16 @@ void Foam::grainWriter::writeGrains
     // time then has no demState and stays incomplete)
     finiteCheck::grains(g, runTime.value(), settings_.dict().objectPath());
     grainsFile(dir/"grains").write(g);
-    // ParaView files in <case>/VTK, where OpenFOAM's foamToVTK writes too:
-    // a VTK file series lists files beside it, not in the time directories
-    const fileName vtkDir(runTime.path()/"VTK");
+    // ParaView files in <case>/postProcessing/grains: a VTK file series
+    // lists files beside it, not in the time directories, and VTK/, where
+    // foamToVTK writes, is removed whole by 'foamToVTK -overwrite'
+    const fileName vtkDir(runTime.path()/outputDir);
     mkDir(vtkDir);
     const fileName vtp(vtkDir/("grains_" + runTime.timeName() + ".vtp"));
     grainVtkWriter::writeVtp(vtp, g, settings_.asciiOutput());
     // the time as the directory names it (not runTime.value() with its
-    // round-off), the time ParaView's OpenFOAM reader gives the fields
+    // round-off), the time ParaView's OpenFOAM reader gives the fields;
+    // the series writes it as that name
     grainVtkWriter::writeSeries
     (
         vtkDir/"grains.vtp.series",
