@@ -45,20 +45,13 @@ struct StoreFluidLoad
     {
         const double volume = grainVolume(radius[i], coreHalfLength ? coreHalfLength[i] : 0.0);
         const TrilinearStencil s = trilinearStencil(fields.grid, position(i));
-        Vector3d source = Vector3d::Zero(), u = Vector3d::Zero();
+        Vector3d source = interpolateVector(s, fields.forceDensity);
         double beta = 0.0;
-        for (int c = 0; c < 8; ++c)
+        if (fields.dragCoefficient)
         {
-            const double* f = fields.forceDensity + 3 * s.cell[c];
-            source += s.weight[c] * Vector3d(f[0], f[1], f[2]);
-            if (fields.dragCoefficient)
-            {
-                const double* v = fields.velocity + 3 * s.cell[c];
-                beta += s.weight[c] * fields.dragCoefficient[s.cell[c]];
-                u += s.weight[c] * Vector3d(v[0], v[1], v[2]);
-            }
+            beta = interpolateScalar(s, fields.dragCoefficient);
+            source += beta * interpolateVector(s, fields.velocity);
         }
-        source += beta * u;
         for (int d = 0; d < 3; ++d)
             load[d * n + i] = volume * source[d];
         load[3 * n + i] = volume * beta;

@@ -73,10 +73,10 @@ DEM_HD TrilinearStencil trilinearStencil(const GridView& grid, const Vector3d& x
     return stencil;
 }
 
-//- Interpolate a 3-per-cell interleaved field at x with the deposit's weights.
-DEM_HD Vector3d interpolateVector(const GridView& grid, const double* field, const Vector3d& x)
+//- A 3-per-cell interleaved field at a stencil's point (trilinearStencil: the deposit's
+//- weights); one stencil serves every field read at that point.
+DEM_HD Vector3d interpolateVector(const TrilinearStencil& s, const double* field)
 {
-    const TrilinearStencil s = trilinearStencil(grid, x);
     Vector3d value = Vector3d::Zero();
     for (int c = 0; c < 8; ++c)
         value += s.weight[c] *
@@ -84,10 +84,9 @@ DEM_HD Vector3d interpolateVector(const GridView& grid, const double* field, con
     return value;
 }
 
-//- Interpolate a 1-per-cell field at x with the deposit's weights.
-DEM_HD double interpolateScalar(const GridView& grid, const double* field, const Vector3d& x)
+//- A 1-per-cell field at a stencil's point.
+DEM_HD double interpolateScalar(const TrilinearStencil& s, const double* field)
 {
-    const TrilinearStencil s = trilinearStencil(grid, x);
     double value = 0.0;
     for (int c = 0; c < 8; ++c)
         value += s.weight[c] * field[s.cell[c]];
