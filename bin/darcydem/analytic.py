@@ -84,23 +84,45 @@ def instantaneous_settlement(porosity, beta, E_oed, fluid_force="darcy"):
     return x / (skeleton_share(porosity, fluid_force) + x)
 
 
+def load_ramps(ramp):
+    """The load history as linear ramps (start, duration, share of the
+    load). ramp is either a duration (one linear ramp from 0 to the full
+    load) or a table (times, shares) of a piecewise-linear history that
+    starts at (0, 0) and ends at share 1, as the lid's normalStress table
+    interpolates it. Every response below is linear in the load, so it is
+    the sum of its responses to these ramps (Duhamel)."""
+    if np.ndim(ramp) == 0:
+        return [(0.0, float(ramp), 1.0)]
+    times, shares = (np.asarray(a, dtype=float) for a in ramp)
+    if times[0] != 0 or shares[0] != 0 or shares[-1] != 1 or np.any(np.diff(times) <= 0):
+        raise ValueError("a load table runs from (0, 0) to share 1 at increasing times")
+    return [(a, b - a, s1 - s0) for a, b, s0, s1 in
+            zip(times[:-1], times[1:], shares[:-1], shares[1:]) if s1 != s0]
+
+
 def ramp_loaded_consolidation(Tv, Tramp, U0, terms=200):
     """Settlement fraction U and base pressure fraction p_base/p0 for a load
-    applied linearly over 0 <= T_v <= Tramp and then held, by superposing
-    (Duhamel) the step responses U0 + (1 - U0) U(T) and the base isochrone
-    (Olson 1977 gives the same for U0 = 0). p0 is the undrained pressure of
-    the full load."""
+    applied over 0 <= T_v <= Tramp and then held, by superposing (Duhamel)
+    the step responses U0 + (1 - U0) U(T) and the base isochrone (Olson 1977
+    gives the same for one linear ramp and U0 = 0). Tramp is the ramp's
+    length in T_v, or a table (T_v, share of the load) of a
+    piecewise-linear load (load_ramps). p0 is the undrained pressure of the
+    full load."""
     j = np.arange(terms)
     M = (2 * j + 1) * np.pi / 2
     Tv = np.atleast_1d(np.asarray(Tv, dtype=float))[:, None]
-    # integral over the loading time of exp(-M^2 (T - s)) ds / Tramp
-    s_end = np.minimum(Tv, Tramp)
-    integral = (np.exp(-M**2 * (Tv - s_end)) - np.exp(-M**2 * Tv)) / (M**2 * Tramp)
-    load = s_end[:, 0] / Tramp
-    # U(T) = 1 - sum 2/M^2 exp(-M^2 T): superposed over the ramp
-    U_cons = load - np.sum(2 / M**2 * integral, axis=1)
-    U = U0 * load + (1 - U0) * U_cons
-    p_base = np.sum(2 / M * np.sin(M) * integral, axis=1)
+    U = np.zeros(len(Tv))
+    p_base = np.zeros(len(Tv))
+    for start, length, share in load_ramps(Tramp):
+        T = np.maximum(Tv - start, 0.0)  # no response before the ramp starts
+        # integral over the loading time of exp(-M^2 (T - s)) ds / length
+        s_end = np.minimum(T, length)
+        integral = (np.exp(-M**2 * (T - s_end)) - np.exp(-M**2 * T)) / (M**2 * length)
+        load = s_end[:, 0] / length
+        # U(T) = 1 - sum 2/M^2 exp(-M^2 T): superposed over the ramp
+        U_cons = load - np.sum(2 / M**2 * integral, axis=1)
+        U += share * (U0 * load + (1 - U0) * U_cons)
+        p_base += share * np.sum(2 / M * np.sin(M) * integral, axis=1)
     return U, p_base
 
 
@@ -114,7 +136,8 @@ def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
     thickness dz, porosity[i] and E_oed[i]; k_face[i] is the permeability
     between layer i and i + 1 (the last one towards the drained cell, whose
     centre is dz above the top layer's). The load rises linearly from 0 to
-    load over 0 <= t <= ramp and is then held. Exact in time (eigenmodes of
+    load over 0 <= t <= ramp and is then held (or, with ramp a table
+    (t, share of the load), piecewise linearly: load_ramps). Exact in time (eigenmodes of
     the layer system). A drained layer of thickness drained_top and modulus
     E_top on top (in the drained cell, under the lid) settles with the load.
     Returns (p[time, layer], settlement[time])."""
@@ -134,11 +157,16 @@ def layered_consolidation(t, dz, porosity, E_oed, k_face, mu, beta, load, ramp,
     lam, V = np.linalg.eigh(s[:, None] * A * s[None, :])
     c = V.T @ (s / E_oed)  # modal share of the loading rate
     t = np.atleast_1d(np.asarray(t, dtype=float))[:, None]
-    t_end = np.minimum(t, ramp)
-    # each mode: da/dt = -lam a + c load/ramp while loading
-    modes = c * (load / ramp) * (np.exp(-lam * (t - t_end)) - np.exp(-lam * t)) / lam
+    modes = np.zeros((len(t), n))
+    sigma = np.zeros(len(t))
+    for start, length, share in load_ramps(ramp):
+        tau = np.maximum(t - start, 0.0)  # no response before the ramp starts
+        tau_end = np.minimum(tau, length)
+        # each mode: da/dt = -lam a + c rate while this ramp loads
+        modes += c * (share * load / length) * (np.exp(-lam * (tau - tau_end))
+                                                - np.exp(-lam * tau)) / lam
+        sigma += share * load * tau_end[:, 0] / length
     p = (modes @ V.T) * s
-    sigma = load * t_end[:, 0] / ramp
     settlement = dz * np.sum((sigma[:, None] - a * p) / E_oed, axis=1) \
         + drained_top * sigma / E_top
     return p, settlement

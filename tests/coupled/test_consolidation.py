@@ -35,10 +35,16 @@ Tolerances (measured values in tests/README.md):
 - halving the coupling interval changes the settlement curve by less than
   2 % of the final settlement;
 - the layered solver itself reduces to Terzaghi for uniform layers at
-  second order in the layer thickness (no case run).
-The undrained start (the base pressure at the end of the ramp against
-the theory's) is written to results.json, not asserted: it is 2-4 % low
-against the 2 % the issue asks (issue 23 item 3, open)."""
+  second order in the layer thickness (no case run);
+- the undrained start, the base pressure at the end of the load ramp,
+  against the layered column's: 2 %, the issue's (the one-c_v Terzaghi's is
+  printed: a single c_v cannot say how fast the layers near the base drain
+  while the load rises; its own error from E_oed is about 1 %).
+The load rises smoothly (its rate a raised cosine, over 0.03 s, five periods
+of the lid's vibration): a linear ramp's kinks left the lid ringing by 8 %
+of the load, and the undrained start was 0.966 of the theory. The drag of
+the load steps is small enough (0.1 N s/m) that it holds 0.4 % of the load
+while the grains sink (bin/darcydem/consolidation.py)."""
 
 import json
 
@@ -120,6 +126,16 @@ def test_layered_column_settlement(study):
     assert cmp_["layered_U_rmsError"] < cmp_["layered_U_tolerance"]
 
 
+def test_undrained_start(study):
+    cmp_ = study["comparison"]
+    print(f"base pressure at the end of the ramp: {cmp_['undrainedStart_measured/p0']:.4f} p0;"
+          f" layered column {cmp_['undrainedStart_layered/p0']:.4f} p0 (ratio "
+          f"{cmp_['undrainedStart_layeredRatio']:.4f}), Terzaghi with one c_v "
+          f"{cmp_['undrainedStart_theory/p0']:.4f} p0 (ratio {cmp_['undrainedStart_ratio']:.4f},"
+          f" its own error from E_oed {cmp_['undrainedStart_theoryRelErr']:.4f})")
+    assert abs(cmp_["undrainedStart_layeredRatio"] - 1) < 0.02
+
+
 def test_halving_the_coupling_interval(study):
     assert study["comparison"]["halfStepMaxChange"] < 0.02
 
@@ -147,3 +163,24 @@ def test_layered_column_reduces_to_terzaghi():
           f"{errors[:, 0]}, settlement {errors[:, 1]}; order {order.ravel()}")
     assert np.all(order > 1.8)
     assert errors[0, 0] < 0.01 and errors[0, 1] < 0.01  # 6 layers, as in the case
+
+
+def test_load_table_superposes_ramps():
+    # a table that is one linear ramp cut into pieces gives the ramp's
+    # response; the smooth ramp of the study ends at the full load
+    from darcydem.consolidation import load_table
+    Tv = np.linspace(0.0, 1.0, 41)
+    one = ramp_loaded_consolidation(Tv, 0.1, 0.4)
+    pieces = ramp_loaded_consolidation(Tv, (np.array([0.0, 0.03, 0.1]),
+                                            np.array([0.0, 0.3, 1.0])), 0.4)
+    assert np.allclose(one, pieces, rtol=0, atol=1e-14)
+    layers = dict(dz=0.01, porosity=[0.4] * 5, E_oed=[1e7] * 5, k_face=[1e-10] * 5, mu=1e-3,
+                  beta=1e-8, load=1e3)
+    t = np.linspace(0.0, 0.2, 9)
+    a = layered_consolidation(t, ramp=0.1, **layers)
+    b = layered_consolidation(t, ramp=(np.array([0.0, 0.05, 0.1]), np.array([0.0, 0.5, 1.0])),
+                              **layers)
+    assert np.allclose(a[0], b[0], rtol=1e-12, atol=0) and np.allclose(a[1], b[1], rtol=1e-12)
+    times, shares = load_table(0.03)
+    assert shares[0] == 0 and shares[-1] == pytest.approx(1, abs=1e-15)
+    assert np.all(np.diff(shares) > 0)
