@@ -41,7 +41,7 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import read_internal_field, read_probes, read_scalar_entry
+from darcydem.foamfiles import read_entry, read_internal_field, read_probes, read_scalar_entry
 
 SIGMA0 = 2e4        # prepared stress on the lid [Pa]
 # Load step [Pa]: a tenth of sigma0, where the skeleton answers linearly as
@@ -92,9 +92,7 @@ class Study:
         self.mu = read_scalar_entry(props, "mu")
         self.beta = read_scalar_entry(props, "beta")
         # the theory follows the case's fluid force model (analytic.skeleton_share)
-        self.fluid_force = subprocess.run(
-            ["foamDictionary", "-entry", "solidPhase/fluidForce/type", "-value", props],
-            check=True, capture_output=True, text=True).stdout.strip()
+        self.fluid_force = read_entry(props, "solidPhase/fluidForce/type")
         skeleton_share(0.4, self.fluid_force)  # no theory for this model: stop here
 
     def stage(self, name, app, state_from=None):

@@ -42,7 +42,6 @@ import filecmp
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -51,7 +50,7 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import grain_files, read_vtp, time_dirs
+from darcydem.foamfiles import grain_files, read_scalar_entry, read_vtp, time_dirs
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -275,15 +274,17 @@ class ShearStudy:
             return False
         state = b.file(os.path.join(self.last_time(b), "demState"))
         grains = np.loadtxt(b.file("0/grains"), comments="#", ndmin=2)
-        block = open(b.file("system/blockMeshDict")).read()
-        dem = open(b.file("constant/demProperties")).read()
+        block = b.file("system/blockMeshDict")
+        dem = b.file("constant/demProperties")
 
-        def number(text, key):
-            m = re.search(r"(?m)^\s*%s\s+([^;\s]+)\s*;" % key, text)
-            return float(m.group(1)) if m else None
+        def number(path, entry):
+            try:
+                return read_scalar_entry(path, entry)
+            except KeyError:
+                return None
 
         pairs = ((number(block, "Lx"), s["box"][0]), (number(block, "Ly"), s["box"][1]),
-                 (number(dem, "normalStiffness"), s["kn"]),
+                 (number(dem, "contact/normalStiffness"), s["kn"]),
                  (number(dem, "timeStep"), s["timeStep"]))
         same = len(grains) == s["count"] and all(
             a is not None and math.isclose(a, b, rel_tol=1e-9) for a, b in pairs)
