@@ -51,6 +51,7 @@ import numpy as np
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
 from darcydem.foamfiles import grain_files, read_scalar_entry, read_vtp, time_dirs
+from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -110,17 +111,6 @@ SIZES = {
                  writes=6, settleTime=0.8, consolidateTime=1.0, drag=1.0,
                  dampingRatio=0.1, preparationFriction=0.0, seed=3),
 }
-
-
-def hanning_smooth(y, width):
-    """Moving Hanning-window average (the paper's smoothing of Figs 4, 7)."""
-    width = max(3, int(width) | 1)
-    if len(y) < width:
-        return np.asarray(y, dtype=float)
-    w = np.hanning(width + 2)[1:-1]
-    w /= w.sum()
-    padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
-    return np.convolve(padded, w, mode="valid")
 
 
 class ShearStudy:
