@@ -216,7 +216,6 @@ class Study:
         c.set("constant/darcyProperties", "beta", 1e-12)
         c.set("system/controlDict", "endTime", 0.002)
         c.set("system/controlDict", "writeInterval", 0.002)
-        c.set("system/controlDict", "writeFormat", "ascii")
         c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % dp)
         self.clock.run(c, "darcyDemFoam", "permeability",
                        f"steady flow, grains fixed, dp = {dp:g} Pa", 0.002)
