@@ -41,7 +41,8 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import read_entry, read_internal_field, read_probes, read_scalar_entry
+from darcydem.foamfiles import (read_columns, read_entry, read_internal_field, read_probes,
+                                read_scalar_entry)
 
 SIGMA0 = 2e4        # prepared stress on the lid [Pa]
 # Load step [Pa]: a tenth of sigma0, where the skeleton answers linearly as
@@ -107,9 +108,10 @@ class Study:
 
     @staticmethod
     def diagnostics(case):
-        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
-                       comments="#")
-        return {"t": d[:, 0], "wall": d[:, 5], "kinetic": d[:, 9], "pBaseMax": d[:, 8]}
+        """grainDiagnostics' columns (doc/CASE-FORMAT.md) the study uses."""
+        d = read_columns(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"))
+        return {"t": d["time"], "wall": d["topWall"], "kinetic": d["kineticEnergy"],
+                "pBaseMax": d["pMax"]}
 
     # 1 ------------------------------------------------------------------
     def prepare(self, settle_time=0.5, load_time=0.3):

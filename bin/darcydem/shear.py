@@ -50,7 +50,7 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import grain_files, read_scalar_entry, read_vtp, time_dirs
+from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp, time_dirs
 from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -111,6 +111,15 @@ SIZES = {
                  writes=6, settleTime=0.8, consolidateTime=1.0, drag=1.0,
                  dampingRatio=0.1, preparationFriction=0.0, seed=3),
 }
+
+# The grainDiagnostics function object's table (doc/CASE-FORMAT.md) and the
+# study's short names for its columns
+DIAGNOSTICS = "postProcessing/grainDiagnostics/0/grainDiagnostics.dat"
+DIAGNOSTICS_COLUMNS = dict(
+    t="time", strain="shearStrain", tau="tau", friction="tauOverSigma0", dilation="dilation",
+    wall="topWall", pMin="pMin", pMean="pMean", pMax="pMax", kinetic="kineticEnergy",
+    contacts="contactsPerGrain", throughput="particleStepsPerS",
+    solidVolumeError="solidVolumeError")
 
 
 class ShearStudy:
@@ -177,11 +186,9 @@ class ShearStudy:
 
     @staticmethod
     def diagnostics(case):
-        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
-                       comments="#", ndmin=2)
-        names = ("t strain tau friction dilation wall pMin pMean pMax kinetic "
-                 "contacts throughput solidVolumeError").split()
-        return {n: d[:, i] for i, n in enumerate(names)}
+        """grainDiagnostics' columns under the study's short names."""
+        d = read_columns(case.file(DIAGNOSTICS))
+        return {short: d[name] for short, name in DIAGNOSTICS_COLUMNS.items()}
 
     def end_and_writes(self, case, end, writes):
         c = "system/controlDict"
