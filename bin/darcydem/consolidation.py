@@ -43,7 +43,8 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import read_internal_field, read_probes, read_scalar_entry
+from darcydem.foamfiles import (read_columns, read_entry, read_internal_field, read_probes,
+                                read_scalar_entry)
 
 SIGMA0 = 2e4        # prepared stress on the lid [Pa]
 # Load step [Pa]: a tenth of sigma0, where the skeleton answers linearly as
@@ -136,9 +137,7 @@ class Study:
         self.mu = read_scalar_entry(props, "mu")
         self.beta = read_scalar_entry(props, "beta")
         # the theory follows the case's fluid force model (analytic.skeleton_share)
-        self.fluid_force = subprocess.run(
-            ["foamDictionary", "-entry", "solidPhase/fluidForce/type", "-value", props],
-            check=True, capture_output=True, text=True).stdout.strip()
+        self.fluid_force = read_entry(props, "solidPhase/fluidForce/type")
         skeleton_share(0.4, self.fluid_force)  # no theory for this model: stop here
 
     def stage(self, name, app, state_from=None):
@@ -153,9 +152,10 @@ class Study:
 
     @staticmethod
     def diagnostics(case):
-        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
-                       comments="#")
-        return {"t": d[:, 0], "wall": d[:, 5], "kinetic": d[:, 9], "pBaseMax": d[:, 8]}
+        """grainDiagnostics' columns (doc/CASE-FORMAT.md) the study uses."""
+        d = read_columns(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"))
+        return {"t": d["time"], "wall": d["topWall"], "kinetic": d["kineticEnergy"],
+                "pBaseMax": d["pMax"]}
 
     # 1 ------------------------------------------------------------------
     def prepare(self, settle_time=0.5, load_time=0.3):
@@ -271,7 +271,6 @@ class Study:
         c.set("constant/darcyProperties", "beta", 1e-12)
         c.set("system/controlDict", "endTime", 0.002)
         c.set("system/controlDict", "writeInterval", 0.002)
-        c.set("system/controlDict", "writeFormat", "ascii")
         c.set("0/p", "boundaryField/bottom", "{ type fixedValue; value uniform %g; }" % dp)
         self.clock.run(c, "darcyDemFoam", "permeability",
                        f"steady flow, grains fixed, dp = {dp:g} Pa", 0.002)

@@ -1,31 +1,105 @@
-"""Read OpenFOAM output into numpy: ASCII fields, probes and plain entries,
-and the grains' VTK files (ASCII or binary, through VTK's own reader)."""
+"""Read OpenFOAM output into numpy: fields (ascii or binary), probes,
+function objects' tables and dictionary entries, and the grains' VTK files
+(ASCII or binary, through VTK's own reader).
+
+Which library reads what, and why:
+- Dictionary entries: OpenFOAM's own foamDictionary (Debian's
+  openfoam package, already installed for the solver), so that an entry
+  is found as the solver finds it (sub-dictionaries, #include, comments).
+  A call costs a process start, 14-17 ms measured here; studies make a
+  few dozen. It prints and rewrites numbers at 6 digits unless told
+  otherwise: every call passes -precision 17, so that a number goes
+  through it as the same double (FOAM_DICTIONARY below).
+- Fields: read here with numpy. foamDictionary v1912 cannot read a binary
+  field (it stops at the first byte of the list: "Expected a '(' while
+  reading VectorSpace"), and foamFormatConvert would have to rewrite the
+  case's time directories as ascii first (changing the case, a mesh-sized
+  run per read). The binary format is small: an ascii header and list
+  sizes around a block of raw doubles whose byte order and width the
+  header's 'arch' names; tests/scripts/test_foamfiles.py checks the binary
+  reading against foamFormatConvert's ascii of the same field, bit for bit.
+- Not foamlib: it is on PyPI only (not in Debian 12), and
+  bin/install-dependencies installs from apt alone; pip on Debian 12's
+  system Python is blocked (PEP 668) and a venv for one package is more
+  for a new user to set up than this module's few lines."""
 
 import json
 import os
 import re
+import subprocess
 
 import numpy as np
 
+# foamDictionary as every helper calls it: numbers at 17 digits, which read
+# back as the same double (at its default 6, '-set' would round every number
+# of the file it rewrites, and '-value' the one it prints)
+FOAM_DICTIONARY = ["foamDictionary", "-precision", "17"]
+
+# components of OpenFOAM's field types
+COMPONENTS = {"scalar": 1, "vector": 3, "sphericalTensor": 1, "symmTensor": 6, "tensor": 9}
+
+
+def read_entry(path, entry):
+    """The value of a dictionary entry (slash-separated path, e.g.
+    "solidPhase/fluidForce/type") as foamDictionary prints it; KeyError when
+    the dictionary has no such entry."""
+    result = subprocess.run([*FOAM_DICTIONARY, "-entry", entry, "-value", path],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        if "Cannot find entry" in result.stdout + result.stderr:
+            raise KeyError(f"{entry} not found in {path}")
+        raise RuntimeError(f"foamDictionary could not read {entry} of {path}:\n"
+                           + result.stdout + result.stderr)
+    return result.stdout.strip()
+
+
+def read_scalar_entry(path, entry):
+    """A number entry 'key value;' or dimensioned 'key [dims] value;' as a float."""
+    return float(read_entry(path, entry).split()[-1])
+
 
 def read_internal_field(path):
-    """internalField of an ASCII volField: (n,) scalars or (n, 3) vectors;
-    a uniform field gives one value."""
-    text = open(path).read()
-    body = text[text.index("internalField"):]
-    m = re.match(r"internalField\s+uniform\s+([^;]+);", body[:300])
+    """internalField of a volField written in ascii or binary: (n,) for
+    scalars, (n, components) otherwise; a uniform field gives one value."""
+    data = open(path, "rb").read()
+    header = re.search(rb"FoamFile\s*\{([^}]*)\}", data)
+    binary = header is not None and re.search(rb"\bformat\s+binary\s*;", header.group(1))
+    start = data.index(b"internalField")
+    m = re.compile(rb"internalField\s+uniform\s+([^;]+);").match(data, start)
     if m:
-        value = m.group(1).strip()
+        # a uniform value is written as text in either format
+        value = m.group(1).decode().strip()
         if value.startswith("("):
             return np.array([[float(v) for v in value.strip("()").split()]])
         return np.array([float(value)])
-    m = re.match(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", body)
-    if not m:
+    m = re.compile(rb"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(").match(data, start)
+    if not m or m.group(1).decode() not in COMPONENTS:
         raise ValueError(f"cannot parse internalField of {path}")
-    n = int(m.group(2))
-    values = body[m.end():body.index(";", m.end())].rstrip().rstrip(")")
-    arr = np.array([float(v) for v in values.replace("(", " ").replace(")", " ").split()])
-    return arr.reshape(n, 3) if m.group(1) == "vector" else arr
+    kind, n = m.group(1).decode(), int(m.group(2))
+    components = COMPONENTS[kind]
+    if binary:
+        dtype = binary_scalar(header.group(1), path)
+        end = m.end() + n * components * dtype.itemsize
+        if data[end:end + 1] != b")":
+            raise ValueError(f"{path}: the binary list of {n} {kind} does not end where "
+                             "its size says")
+        arr = np.frombuffer(data, dtype, n * components, m.end()).astype(float)
+    else:
+        values = data[m.end():data.index(b";", m.end())].decode().rstrip().rstrip(")")
+        arr = np.array([float(v) for v in values.replace("(", " ").replace(")", " ").split()])
+    return arr if components == 1 else arr.reshape(n, components)
+
+
+def binary_scalar(header, path):
+    """numpy type of the scalars of a binary file from its header's arch,
+    e.g. "LSB;label=32;scalar=64" (little-endian doubles)."""
+    m = re.search(rb'arch\s+"([^"]*)"', header)
+    arch = m.group(1).decode() if m else "LSB;label=32;scalar=64"
+    order = {"LSB": "<", "MSB": ">"}.get(arch.split(";")[0])
+    bits = re.search(r"scalar=(\d+)", arch)
+    if order is None or bits is None or bits.group(1) not in ("32", "64"):
+        raise ValueError(f"{path}: binary arch {arch!r} not understood")
+    return np.dtype(order + "f" + str(int(bits.group(1)) // 8))
 
 
 def read_probes(path):
@@ -37,15 +111,6 @@ def read_probes(path):
         rows.append([float(v) for v in line.replace("(", " ").replace(")", " ").split()])
     data = np.array(rows)
     return data[:, 0], data[:, 1:]
-
-
-def read_scalar_entry(path, key):
-    """Value of the first 'key [dims] value;' entry anywhere in a dictionary."""
-    text = open(path).read()
-    m = re.search(r"(?m)^\s*%s\s+(?:\[[^\]]*\]\s*)?([-+0-9.eE]+)\s*;" % re.escape(key), text)
-    if not m:
-        raise KeyError(f"{key} not found in {path}")
-    return float(m.group(1))
 
 
 def time_dirs(case):
@@ -116,15 +181,19 @@ def read_vtp_lines(path):
 def read_columns(path):
     """A function object's table (postProcessing/<name>/<time>/<file>.dat):
     {column name: values}, the names from the last '#' line before the
-    data ('# time name ...')."""
+    data ('# time name ...'); a table without rows gives empty columns."""
     names = None
+    rows = []
     for line in open(path):
         if line.startswith("#"):
-            names = line[1:].split()
-        else:
-            break
-    values = np.loadtxt(path, comments="#", ndmin=2)
-    return {name: values[:, k] for k, name in enumerate(names)}
+            if not rows:
+                names = line[1:].split()
+        elif line.strip():
+            rows.append(line.split())
+    if names is None:
+        raise ValueError(f"{path}: no header line naming the columns")
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 # Folder of the grains' ParaView files (grains, capsules, bonds and their

@@ -2,7 +2,9 @@
 surfaces (postProcessing/grains/capsules_<time>.vtp, capsules and spheres
 as they are) or, without capsules, Sphere glyphs of grains_<time>.vtp, as
 ParaView shows them. Debian's VTK renders offscreen only through an X display:
-virtual_display() starts Xvfb when none is set."""
+virtual_display() starts Xvfb when none is set, and is the one place that
+does (bin/plotGrains and tests/paraview use it, no xvfb-run wrapper);
+snapshot() renders a scene to a PNG and its pixels for both."""
 
 import contextlib
 import os
@@ -22,7 +24,8 @@ def virtual_display():
                                "1024x768x24", "-nolisten", "tcp"],
                               pass_fds=(write_end,), stderr=subprocess.DEVNULL)
     os.close(write_end)
-    # Xvfb writes the number, then a newline: read both before closing
+    # Xvfb writes the number, then a newline: read both before closing (it stops
+    # if the newline cannot be written)
     with os.fdopen(read_end) as numbers:
         number = numbers.readline().strip()
     if not number:
@@ -96,6 +99,14 @@ def render_surfaces(path, png, title="", size=(1000, 800), elevation=20, azimuth
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCamera()
     camera.Zoom(1.05)
+    return snapshot(renderer, png, size)
+
+
+def snapshot(renderer, png, size):
+    """Render the renderer's scene offscreen at size (width, height) to png
+    (inside virtual_display()); returns the image, (height, width, 3) RGB."""
+    import vtkmodules.all as vtk
+    from vtkmodules.util.numpy_support import vtk_to_numpy
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.AddRenderer(renderer)

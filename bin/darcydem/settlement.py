@@ -38,6 +38,8 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
+from darcydem.foamfiles import read_columns
+from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -84,34 +86,6 @@ PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
 # Function objects' output, as written by wallStress and packingStatistics
 WALL_STRESS = "postProcessing/wallStress/0/wallStress.dat"
 PACKING = "postProcessing/packingStatistics/0/packing.dat"
-
-
-def read_columns(path):
-    """{column name: array} of a function object's .dat file whose last
-    comment line names the columns ('# time a b ...')."""
-    names = None
-    rows = []
-    for line in open(path):
-        if line.startswith("#"):
-            names = line[1:].split()
-        elif line.strip():
-            rows.append([float(v) for v in line.split()])
-    if names is None:
-        raise ValueError(f"{path}: no header line naming the columns")
-    data = np.array(rows, dtype=float).reshape(-1, len(names))
-    return {n: data[:, i] for i, n in enumerate(names)}
-
-
-def hanning_smooth(y, width):
-    """Moving Hanning-window average, ends padded with the end values."""
-    y = np.asarray(y, dtype=float)
-    width = max(3, int(width) | 1)
-    if len(y) < width:
-        return y
-    w = np.hanning(width + 2)[1:-1]
-    w /= w.sum()
-    padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
-    return np.convolve(padded, w, mode="valid")
 
 
 def label(nu):

@@ -42,7 +42,6 @@ import filecmp
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -51,7 +50,8 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import grain_files, read_vtp, time_dirs
+from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp, time_dirs
+from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -112,16 +112,14 @@ SIZES = {
                  dampingRatio=0.1, preparationFriction=0.0, seed=3),
 }
 
-
-def hanning_smooth(y, width):
-    """Moving Hanning-window average (the paper's smoothing of Figs 4, 7)."""
-    width = max(3, int(width) | 1)
-    if len(y) < width:
-        return np.asarray(y, dtype=float)
-    w = np.hanning(width + 2)[1:-1]
-    w /= w.sum()
-    padded = np.concatenate([np.full(width // 2, y[0]), y, np.full(width // 2, y[-1])])
-    return np.convolve(padded, w, mode="valid")
+# The grainDiagnostics function object's table (doc/CASE-FORMAT.md) and the
+# study's short names for its columns
+DIAGNOSTICS = "postProcessing/grainDiagnostics/0/grainDiagnostics.dat"
+DIAGNOSTICS_COLUMNS = dict(
+    t="time", strain="shearStrain", tau="tau", friction="tauOverSigma0", dilation="dilation",
+    wall="topWall", pMin="pMin", pMean="pMean", pMax="pMax", kinetic="kineticEnergy",
+    contacts="contactsPerGrain", throughput="particleStepsPerS",
+    solidVolumeError="solidVolumeError")
 
 
 class ShearStudy:
@@ -188,11 +186,9 @@ class ShearStudy:
 
     @staticmethod
     def diagnostics(case):
-        d = np.loadtxt(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"),
-                       comments="#", ndmin=2)
-        names = ("t strain tau friction dilation wall pMin pMean pMax kinetic "
-                 "contacts throughput solidVolumeError").split()
-        return {n: d[:, i] for i, n in enumerate(names)}
+        """grainDiagnostics' columns under the study's short names."""
+        d = read_columns(case.file(DIAGNOSTICS))
+        return {short: d[name] for short, name in DIAGNOSTICS_COLUMNS.items()}
 
     def end_and_writes(self, case, end, writes):
         c = "system/controlDict"
@@ -275,15 +271,17 @@ class ShearStudy:
             return False
         state = b.file(os.path.join(self.last_time(b), "demState"))
         grains = np.loadtxt(b.file("0/grains"), comments="#", ndmin=2)
-        block = open(b.file("system/blockMeshDict")).read()
-        dem = open(b.file("constant/demProperties")).read()
+        block = b.file("system/blockMeshDict")
+        dem = b.file("constant/demProperties")
 
-        def number(text, key):
-            m = re.search(r"(?m)^\s*%s\s+([^;\s]+)\s*;" % key, text)
-            return float(m.group(1)) if m else None
+        def number(path, entry):
+            try:
+                return read_scalar_entry(path, entry)
+            except KeyError:
+                return None
 
         pairs = ((number(block, "Lx"), s["box"][0]), (number(block, "Ly"), s["box"][1]),
-                 (number(dem, "normalStiffness"), s["kn"]),
+                 (number(dem, "contact/normalStiffness"), s["kn"]),
                  (number(dem, "timeStep"), s["timeStep"]))
         same = len(grains) == s["count"] and all(
             a is not None and math.isclose(a, b, rel_tol=1e-9) for a, b in pairs)

@@ -21,6 +21,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from darcydem.case import Case
 from darcydem.foamfiles import capsule_axes, grain_files, read_grains, read_vtp
+from darcydem.render import snapshot, virtual_display
 
 WRITE_TIMES = [0.01, 0.02]
 FIELDS = {"p": 1, "porosity": 1, "k": 1, "Us": 3, "qDarcy": 3}
@@ -31,7 +32,7 @@ GRAIN_ARRAYS = {"radius": 1, "coreHalfLength": 1, "orientation": 4, "axis": 3, "
 FLOAT32_EPS = 2.0**-24
 # the fluid's porosity is clamped to [porosityMin, porosityMax] (0.9 in the template): the
 # test opens the clamp to 1 - CLAMP_GAP so that the written porosity holds the whole
-# deposit (foamDictionary writes 6 digits)
+# deposit (set as 0.999999)
 CLAMP_GAP = 1e-6
 
 
@@ -50,27 +51,9 @@ def case():
 
 @pytest.fixture(scope="module")
 def x_display():
-    """Debian's VTK renders offscreen only through an X display: a virtual
-    one (Xvfb, installed by bin/install-dependencies) unless one is set."""
-    if os.environ.get("DISPLAY"):
-        yield os.environ["DISPLAY"]
-        return
-    read_end, write_end = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
-                               "1024x768x24", "-nolisten", "tcp"],
-                              pass_fds=(write_end,), stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    # Xvfb writes the number, then a newline: read both before closing (it stops
-    # if the newline cannot be written)
-    with os.fdopen(read_end) as numbers:
-        number = numbers.readline().strip()
-    if not number:
-        raise RuntimeError("Xvfb did not start (bin/install-dependencies installs it)")
-    os.environ["DISPLAY"] = ":" + number
-    yield os.environ["DISPLAY"]
-    del os.environ["DISPLAY"]
-    server.terminate()
-    server.wait()
+    """The X display Debian's VTK needs to render offscreen (darcydem.render)."""
+    with virtual_display() as display:
+        yield display
 
 
 def input_grains(c):
@@ -198,24 +181,7 @@ def render_grains(path, png, size=(800, 600), surfaces=False):
     renderer.AddActor(actor)
     renderer.GetActiveCamera().Elevation(-80)   # look along y at the column's side
     renderer.ResetCamera()
-    window = vtk.vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
-    window.SetSize(*size)
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(png)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    image = grab.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = np.array(vtk_to_numpy(image.GetPointData().GetScalars())).reshape(height, width, 3)
-    window.Finalize()   # let go of the X display before the server stops
+    pixels = snapshot(renderer, png, size)
     return pixels, magnitude
 
 

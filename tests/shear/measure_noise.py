@@ -11,10 +11,10 @@ usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
 
 import json
 import os
-import re
 import sys
 
 from darcydem.case import TEST_RUNS, Case, copy_tutorial
+from darcydem.foamfiles import read_scalar_entry
 from darcydem.shear import IMPERMEABLE_KC, PERMEABLE_KC, ShearStudy
 
 
@@ -38,8 +38,7 @@ def run_case_from_prepared(seed, case):
     s.prepared = b.file(os.path.join(s.last_time(b), "demState"))
     s.height = float(s.diagnostics(b)["wall"][-1])
     # the mesh of the consolidate stage
-    block = open(b.file("system/blockMeshDict")).read()
-    s.cells_z = int(re.search(r"\bnz\s+(\d+);", block).group(1))
+    s.cells_z = int(read_scalar_entry(b.file("system/blockMeshDict"), "nz"))
     rate = s.s["rateStrain"]
     kwargs = {"dry": {}, "permeable": dict(kc=PERMEABLE_KC),
               "impermeable": dict(kc=IMPERMEABLE_KC),
