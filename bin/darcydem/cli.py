@@ -9,6 +9,7 @@ because Python buffers stdout when it is not a terminal.
 
 import os
 import sys
+import threading
 import time
 
 
@@ -32,19 +33,60 @@ def require_folder(prog, folder, needs):
 
 class StageClock:
     """Stage lines: 'PROG: stage NAME: WHAT, to t = END s' when a stage
-    starts, 'PROG: stage NAME done in N s (wall)' when it ends, so that a
-    log shows which solver run is going and how long each one took."""
+    starts, the solver's latest progress line (simulated time, per cent,
+    particle-steps/s, time left) every relay_interval seconds while it
+    runs, and 'PROG: stage NAME done in N s (wall)' when it ends, so that a
+    terminal or a log shows which solver run is going, how far it is and
+    how long each one took. The solvers write their progress into the
+    stage's log.<app>; a stage of the quick shear runs for minutes."""
 
-    def __init__(self, prog, log=say):
+    def __init__(self, prog, log=say, relay_interval=30.0):
         self.prog = prog
         self.log = log
+        self.relay_interval = relay_interval
         self.seconds = {}
 
     def run(self, case, app, name, what, end):
-        """case.run(app) between the two lines; returns its wall seconds."""
+        """case.run(app) between the two lines, relaying its progress;
+        returns its wall seconds."""
         self.log(f"{self.prog}: stage {name}: {what}, to t = {end:.4g} s")
         start = time.monotonic()
-        case.run(app)
+        failure = []
+
+        def solve():
+            try:
+                case.run(app)
+            except BaseException as e:  # re-raised below, in the caller's thread
+                failure.append(e)
+
+        solver = threading.Thread(target=solve, daemon=True)
+        solver.start()
+        relayed = None
+        while True:
+            solver.join(self.relay_interval)
+            if not solver.is_alive():
+                break
+            line = last_progress_line(case.file("log." + app))
+            if line and line != relayed:
+                self.log(f"{self.prog}: stage {name}: {line}")
+                relayed = line
+        if failure:
+            raise failure[0]
         seconds = self.seconds[name] = time.monotonic() - start
         self.log(f"{self.prog}: stage {name} done in {seconds:.0f} s (wall)")
         return seconds
+
+
+def last_progress_line(log, tail=8192):
+    """The last 'Progress: ...' line of a solver log, without the word
+    ('t = 0.169 s, 49 %, 7.3e+06 particle-steps/s, about 5 s left'), or
+    None if it has none yet (or no log)."""
+    try:
+        with open(log, "rb") as f:
+            f.seek(0, os.SEEK_END)
+            f.seek(max(0, f.tell() - tail))
+            text = f.read().decode(errors="replace")
+    except FileNotFoundError:
+        return None
+    lines = [ln for ln in text.splitlines() if ln.startswith("Progress: ")]
+    return lines[-1][len("Progress: "):].strip() if lines else None

@@ -3,12 +3,15 @@ usage and creates nothing; a missing or mistyped folder is one line naming
 it, a non-zero exit, and nothing created (a study used to make
 <typo>/stages, then end in a traceback); makeGrains refuses a random
 packing that cannot fit before placing any grain; a study's first stage
-line reaches a pipe at once, without PYTHONUNBUFFERED.
+line reaches a pipe at once, without PYTHONUNBUFFERED, and a stage relays
+its solver's progress (simulated time, per cent, rate, time left) while it
+runs.
 
 Every script runs with a fresh temporary directory as its working
 directory, and "creates nothing" is checked by listing that directory."""
 
 import os
+import re
 import select
 import shutil
 import signal
@@ -135,3 +138,41 @@ def test_study_stage_line_reaches_a_pipe_at_once(tmp_path):
     assert line.startswith("shearStudy: stage settle: "), line
     assert "to t = " in line
     assert running, "the study had ended when its first line came"
+
+
+def test_stage_progress_is_relayed_while_the_solver_runs():
+    """A study's stage relays the solver's progress lines (simulated time,
+    per cent, rate, time left) while the solver runs, not only the stage's
+    first and last lines: darcyDemFoam on the grain column for about 5 s,
+    progress written every 0.2 s, relayed every 0.5 s. A failing solver
+    still stops the study with its error."""
+    if shutil.which("darcyDemFoam") is None:
+        pytest.skip("darcyDemFoam not on PATH (source etc/bashrc after ./Allwmake)")
+    sys.path.insert(0, BIN)
+    from darcydem.case import Case, RunError
+    from darcydem.cli import StageClock
+
+    case = Case("grainColumn", "stage_progress")
+    case.set("constant/demProperties", "output/progressInterval", 0.2)
+    case.set("system/controlDict", "endTime", 0.3)
+    case.mesh()
+    lines = []
+    StageClock("study", lines.append, relay_interval=0.5).run(case, "darcyDemFoam", "column",
+                                                              "a grain column", 0.3)
+    print("\n".join(lines))
+    assert lines[0] == "study: stage column: a grain column, to t = 0.3 s"
+    assert lines[-1].startswith("study: stage column done in ")
+    relayed = lines[1:-1]
+    assert relayed, "no progress line while the solver ran"
+    times = []
+    for line in relayed:
+        m = re.fullmatch(r"study: stage column: t = (\S+) s, (\d+) %, \S+ particle-steps/s, "
+                         r"about (\d+) s left", line)
+        assert m, line
+        times.append(float(m.group(1)))
+    assert times == sorted(times) and 0 < times[0] and times[-1] <= 0.3
+
+    case.set("constant/demProperties", "timeStep", -1)
+    with pytest.raises(RunError, match="timeStep"):
+        StageClock("study", lines.append, relay_interval=0.5).run(case, "darcyDemFoam",
+                                                                  "broken", "a bad case", 0.3)
