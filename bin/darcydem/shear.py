@@ -42,6 +42,7 @@ import filecmp
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -392,11 +393,45 @@ class ShearStudy:
             "strainEnd": float(strain[-1]),
             "throughput": float(d["throughput"][-1]),
         }
+        out.update(self.loop_rate(c))
         if kc is not None:
             k = kc * 0.35**3 / 0.65**2
             out["diffusivityAtPorosity0.35"] = k / (self.beta * 0.35 * mu)
         self.curves[name] = {"d": d, "smooth": smooth, "case": c}
         return out
+
+    @staticmethod
+    def loop_rate(c):
+        """The run's grain-steps per second over its whole time loop and in
+        its DEM steps alone, from the step timers' last table in the log
+        (src/demCoupling/stepTimers); {} for a log without one."""
+        for app in ("darcyDemFoam", "demFoam"):
+            log = c.file("log." + app)
+            if os.path.exists(log):
+                found = re.findall(r"whole loop: (\S+) grain-steps/s \(DEM steps alone: (\S+)\)",
+                                   open(log).read())
+                if found:
+                    return {"grainStepsPerSecond": float(found[-1][0]),
+                            "demGrainStepsPerSecond": float(found[-1][1])}
+        return {}
+
+    def coupling_cost(self):
+        """Grain-steps per second of the saturated shears over the dry one's
+        (whole time loop): what the coupling costs per grain-step. Printed
+        and kept in the results; a timing, so never asserted (stages of one
+        study are not a controlled comparison: the machine's load changes
+        over minutes, and a saturated bed is another bed)."""
+        r = self.results
+        dry = r["dry"].get("grainStepsPerSecond")
+        if not dry:
+            return
+        ratios = {name: r[name]["grainStepsPerSecond"] / dry
+                  for name in ("permeable", "impermeable")
+                  if r.get(name, {}).get("grainStepsPerSecond")}
+        r["saturatedOverDryGrainStepsPerSecond"] = ratios
+        self.log("shearStudy: grain-steps/s of the whole loop: dry %.3g; "
+                 % dry + ", ".join("%s %.3g (%.2f of dry)" % (n, dry * q, q)
+                                   for n, q in ratios.items()))
 
     # ---- the experiment -------------------------------------------------------------------
     def run(self):
@@ -417,6 +452,7 @@ class ShearStudy:
                 name = "impermeable_mu%g" % factor
                 r["rate"]["%g" % factor] = self.shear(name, kc=IMPERMEABLE_KC,
                                                       mu_factor=factor, strain=strain)
+        self.coupling_cost()
         self.write_results()
         return r
 
