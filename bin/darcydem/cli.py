@@ -61,12 +61,13 @@ class StageClock:
 
         solver = threading.Thread(target=solve, daemon=True)
         solver.start()
+        progress = ProgressReader(case.file("log." + app))
         relayed = None
         while True:
             solver.join(self.relay_interval)
             if not solver.is_alive():
                 break
-            line = last_progress_line(case.file("log." + app))
+            line = progress.latest()
             if line and line != relayed:
                 self.log(f"{self.prog}: stage {name}: {line}")
                 relayed = line
@@ -77,16 +78,31 @@ class StageClock:
         return seconds
 
 
-def last_progress_line(log, tail=8192):
-    """The last 'Progress: ...' line of a solver log, without the word
-    ('t = 0.169 s, 49 %, 7.3e+06 particle-steps/s, about 5 s left'), or
-    None if it has none yet (or no log)."""
-    try:
-        with open(log, "rb") as f:
-            f.seek(0, os.SEEK_END)
-            f.seek(max(0, f.tell() - tail))
-            text = f.read().decode(errors="replace")
-    except FileNotFoundError:
-        return None
-    lines = [ln for ln in text.splitlines() if ln.startswith("Progress: ")]
-    return lines[-1][len("Progress: "):].strip() if lines else None
+class ProgressReader:
+    """The latest 'Progress: ...' line of a growing solver log, without the
+    word ('t = 0.169 s, 49 %, 7.3e+06 particle-steps/s, about 5 s left').
+    Reads only what was added since the last call: the solvers print
+    `Time =` and their step lines every fluid step, so between two progress
+    lines a log grows by tens of kB."""
+
+    def __init__(self, log):
+        self.log = log
+        self.offset = 0
+        self.partial = ""
+        self.line = None
+
+    def latest(self):
+        """The last progress line so far, or None (none yet, or no log)."""
+        try:
+            with open(self.log, "rb") as f:
+                f.seek(self.offset)
+                chunk = f.read()
+        except FileNotFoundError:
+            return self.line
+        self.offset += len(chunk)
+        lines = (self.partial + chunk.decode(errors="replace")).split("\n")
+        self.partial = lines.pop()  # a line still being written
+        for ln in lines:
+            if ln.startswith("Progress: "):
+                self.line = ln[len("Progress: "):].strip()
+        return self.line

@@ -143,7 +143,7 @@ def test_study_stage_line_reaches_a_pipe_at_once(tmp_path):
 def test_stage_progress_is_relayed_while_the_solver_runs():
     """A study's stage relays the solver's progress lines (simulated time,
     per cent, rate, time left) while the solver runs, not only the stage's
-    first and last lines: darcyDemFoam on the grain column for about 5 s,
+    first and last lines: darcyDemFoam on the grain column for a few seconds,
     progress written every 0.2 s, relayed every 0.5 s. A failing solver
     still stops the study with its error."""
     if shutil.which("darcyDemFoam") is None:
