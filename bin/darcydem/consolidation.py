@@ -43,8 +43,8 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import (read_columns, read_entry, read_internal_field, read_probes,
-                                read_scalar_entry)
+from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, read_columns, read_entry,
+                                read_internal_field, read_probes, read_scalar_entry)
 
 SIGMA0 = 2e4        # prepared stress on the lid [Pa]
 # Load step [Pa]: a tenth of sigma0, where the skeleton answers linearly as
@@ -73,7 +73,8 @@ REST_DRAG = 0.5
 # share(t) = t/RAMP - sin(2 pi t/RAMP)/(2 pi), in RAMP_SEGMENTS linear pieces
 # of the lid's normalStress table; the theory superposes Terzaghi over the
 # same pieces. Why: a load history leaves the lid ringing with the amplitude
-# |integral of its rate times exp(-i w t)| (load_excitation). A linear ramp
+# |integral of its rate times exp(-i w t) dt|, w its angular frequency
+# (a sum in closed form over the linear pieces). A linear ramp
 # over 0.02 s, before, left 8 % of the load at the 6-ms period: the base
 # pressure at the end of the ramp was 0.966 of the theory's and rose to 1.03
 # half a period later. This one leaves at most 0.8 % for any period from 4
@@ -98,24 +99,12 @@ def load_table(ramp, segments=RAMP_SEGMENTS):
     return times, times / ramp - np.sin(2 * np.pi * times / ramp) / (2 * np.pi)
 
 
-def load_history(ramp):
-    """The lid's stress as an OpenFOAM table: sigma0, raised by LOAD over
-    ramp seconds (load_table), then held."""
-    times, shares = load_table(ramp)
+def load_history(table):
+    """The lid's stress as an OpenFOAM table: sigma0, raised by LOAD along
+    a load table (load_table), then held."""
+    times, shares = table
     return "table (%s)" % " ".join("(%.9g %.9g)" % (t, SIGMA0 + LOAD * f)
                                    for t, f in zip(times, shares))
-
-
-def load_excitation(ramp, period):
-    """The amplitude, as a share of the load, at which a load history
-    (times, shares) leaves an undamped oscillator of the given period
-    ringing after it: |integral of (d share/dt) exp(-i w t) dt|, exact for
-    the piecewise-linear history."""
-    times, shares = ramp
-    w = 2 * np.pi / period
-    rates = np.diff(shares) / np.diff(times)
-    return abs(np.sum(rates * (np.exp(-1j * w * times[1:]) - np.exp(-1j * w * times[:-1]))
-                      / (-1j * w)))
 
 
 class Study:
@@ -127,6 +116,7 @@ class Study:
         self.template = os.path.basename(self.dir)
         os.makedirs(self.stages, exist_ok=True)
         self.ramp = RAMP
+        self.load = load_table(RAMP)  # the lid's load history, as the theory superposes it
         # extra (file, entry, value) settings of the consolidation stages
         self.consolidation_settings = []
         self.coupling_steps = (("consolidation", 1e-4), ("consolidationHalfStep", 5e-5))
@@ -153,7 +143,7 @@ class Study:
     @staticmethod
     def diagnostics(case):
         """grainDiagnostics' columns (doc/CASE-FORMAT.md) the study uses."""
-        d = read_columns(case.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat"))
+        d = read_columns(case.file(GRAIN_DIAGNOSTICS))
         return {"t": d["time"], "wall": d["topWall"], "kinetic": d["kineticEnergy"],
                 "pBaseMax": d["pMax"]}
 
@@ -209,7 +199,7 @@ class Study:
         self.dry(c, end, drag=QUASI_STATIC_DRAG)
         # the grains at 16 times: the mean over the tail gives the strain profile
         c.set("system/controlDict", "writeInterval", end / 16)
-        c.set("constant/demProperties", "walls/top/normalStress", load_history(self.ramp))
+        c.set("constant/demProperties", "walls/top/normalStress", load_history(self.load))
         self.clock.run(c, "demFoam", "oedometer", f"dry load step +{LOAD:g} Pa", end)
         self.oedometer_case = c
         d = self.diagnostics(c)
@@ -341,7 +331,7 @@ class Study:
     # 4, 5 ---------------------------------------------------------------
     def consolidate(self, name, dt, end):
         c = self.stage(name, "darcyDemFoam", self.prepared)
-        c.set("constant/demProperties", "walls/top/normalStress", load_history(self.ramp))
+        c.set("constant/demProperties", "walls/top/normalStress", load_history(self.load))
         c.set("constant/demProperties", "viscousDrag", QUASI_STATIC_DRAG)
         c.set("system/controlDict", "deltaT", dt)
         c.set("system/controlDict", "endTime", end)
@@ -389,7 +379,7 @@ class Study:
         ref = curves["consolidation"]
         window = (ref["Tv"] >= 0.05) & (ref["Tv"] <= 1.5)
         U0 = self.U0 = instantaneous_settlement(self.porosity, self.beta, self.E_oed, ff)
-        times, shares = load_table(self.ramp)
+        times, shares = self.load
         self.Tramp = (cv * times / H**2, shares)
         results["theory"]["instantaneousSettlement"] = U0
         results["theory"]["Tv_ramp"] = float(self.Tramp[0][-1])
@@ -444,7 +434,7 @@ class Study:
         E = self.E_layers if E is None else E
         k_face = self.k_faces if k_face is None else k_face
         p, s = layered_consolidation(t, self.dz, self.phi_layers, E[:-1], k_face, self.mu,
-                                     self.beta, LOAD, load_table(self.ramp),
+                                     self.beta, LOAD, self.load,
                                      drained_top=self.height0 - self.k_wall * self.dz,
                                      E_top=E[-1], fluid_force=self.fluid_force)
         return p[:, 0], s

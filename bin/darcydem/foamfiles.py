@@ -35,6 +35,9 @@ import numpy as np
 # of the file it rewrites, and '-value' the one it prints)
 FOAM_DICTIONARY = ["foamDictionary", "-precision", "17"]
 
+# the grainDiagnostics function object's table in a case (doc/CASE-FORMAT.md)
+GRAIN_DIAGNOSTICS = "postProcessing/grainDiagnostics/0/grainDiagnostics.dat"
+
 # components of OpenFOAM's field types
 COMPONENTS = {"scalar": 1, "vector": 3, "sphericalTensor": 1, "symmTensor": 6, "tensor": 9}
 

@@ -51,7 +51,8 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp, time_dirs
+from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, grain_files, read_columns, read_scalar_entry,
+                                read_vtp, time_dirs)
 from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -113,9 +114,8 @@ SIZES = {
                  dampingRatio=0.1, preparationFriction=0.0, seed=3),
 }
 
-# The grainDiagnostics function object's table (doc/CASE-FORMAT.md) and the
-# study's short names for its columns
-DIAGNOSTICS = "postProcessing/grainDiagnostics/0/grainDiagnostics.dat"
+# The study's short names for the columns of the grainDiagnostics table
+# (foamfiles.GRAIN_DIAGNOSTICS, doc/CASE-FORMAT.md)
 DIAGNOSTICS_COLUMNS = dict(
     t="time", strain="shearStrain", tau="tau", friction="tauOverSigma0", dilation="dilation",
     wall="topWall", pMin="pMin", pMean="pMean", pMax="pMax", kinetic="kineticEnergy",
@@ -188,7 +188,7 @@ class ShearStudy:
     @staticmethod
     def diagnostics(case):
         """grainDiagnostics' columns under the study's short names."""
-        d = read_columns(case.file(DIAGNOSTICS))
+        d = read_columns(case.file(GRAIN_DIAGNOSTICS))
         return {short: d[name] for short, name in DIAGNOSTICS_COLUMNS.items()}
 
     def end_and_writes(self, case, end, writes):
@@ -258,7 +258,7 @@ class ShearStudy:
         times = c.times()
         step = self.s["subSteps"] * self.s["timeStep"]
         if not times or abs(times[-1][0] - end) > step * (1 + 1e-6) or not os.path.exists(
-                c.file("postProcessing/grainDiagnostics/0/grainDiagnostics.dat")):
+                c.file(GRAIN_DIAGNOSTICS)):
             return None
         return c
 
