@@ -29,12 +29,21 @@ __global__ void forEachKernel(F f, int n)
         f(i);
 }
 
-template <class F>
-__global__ void forEachPairKernel(F f, long n)
+//- One thread per pair (OmpExecution::forEachTouchingPair): a pair that cannot touch only
+//- clears its history and points at the zero record (its lane idles while the others of the
+//- warp compute); one that may touch gets its own record, p + 1.
+template <class K>
+__global__ void forEachTouchingPairKernel(K kernel, long n)
 {
-    const long i = long(blockIdx.x) * blockDim.x + threadIdx.x;
-    if (i < n)
-        f(i);
+    int* slot = kernel.pairs.contactSlot;
+    const long p = long(blockIdx.x) * blockDim.x + threadIdx.x;
+    if (p >= n)
+        return;
+    const bool touch = kernel.mayTouch(p);
+    kernel.keepHistoryIf(touch, p);
+    slot[p] = touch ? int(p) + 1 : 0;
+    if (touch)
+        kernel(p);
 }
 
 template <class F>
@@ -78,13 +87,14 @@ public:
         DEM_CUDA_CHECK_LAUNCH("forEachKernel");
     }
 
-    template <class F>
-    static void forEachPair(long n, const F& f)
+    //- The pair pass (OmpExecution::forEachTouchingPair).
+    template <class K>
+    static void forEachTouchingPair(long n, const K& kernel)
     {
         if (n <= 0)
             return;
-        forEachPairKernel<<<int((n + kBlock - 1) / kBlock), kBlock>>>(f, n);
-        DEM_CUDA_CHECK_LAUNCH("forEachPairKernel");
+        forEachTouchingPairKernel<<<int((n + kBlock - 1) / kBlock), kBlock>>>(kernel, n);
+        DEM_CUDA_CHECK_LAUNCH("forEachTouchingPairKernel");
     }
 
     template <class F>

@@ -6,6 +6,8 @@
 // keeps cached device memory.
 #pragma once
 
+#include "kernels/Views.h"
+
 #include <thrust/system/omp/execution_policy.h>
 #include <thrust/system/omp/vector.h>
 
@@ -41,19 +43,64 @@ struct OmpExecution
             f(i);
     }
 
-    //- Per-pair kernels: straight-line bodies, vectorised across consecutive items. Vector and
-    //- scalar (remainder) iterations give the same bits: the CPU build does not contract a*b+c
-    //- into fused multiply-adds (-ffp-contract=off), so where a thread's range starts does not
-    //- change any result.
-    template <class F>
-    static void forEachPair(long n, const F& f)
+    //- The pair pass over the n pairs of kernel.pairs (a PairForceKernel): those for which
+    //- kernel.mayTouch(p) holds are evaluated, the others get a cleared history and the zero
+    //- record (contactSlot[p] = 0). Per thread, blocks of kBlockPairs pairs: the test
+    //- vectorised; the pairs that may touch listed in order, with their grains and history
+    //- copied into a contiguous scratch (scalar); the contact law vectorised over them only,
+    //- the k-th into record first + k + 1 of the block starting at pair first (the records
+    //- stay in pair order, contiguous); the history copied back. Each pair's arithmetic is that
+    //- of a plain loop over all pairs (vector and scalar iterations round alike,
+    //- -ffp-contract=off), so neither the thread count nor the blocks change a bit.
+    static constexpr int kBlockPairs = 512;
+    template <class K>
+    static void forEachTouchingPair(long n, const K& kernel)
     {
+        constexpr int kHistory = 3 * kHistoryVectors;
 #pragma omp parallel if (n >= kParallelThreshold)
         {
-            const F local = f; // members become loop invariants
-#pragma omp for simd schedule(static) nowait
-            for (long i = 0; i < n; ++i)
-                local(i);
+            const K local = kernel; // members become loop invariants
+            const PairView& pairs = local.pairs;
+            const long hs = pairs.historyStride();
+            int pair[kBlockPairs], owner[kBlockPairs], partner[kBlockPairs];
+            double history[kHistory * kBlockPairs];
+            const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
+            const long begin = n * thread / threads, end = n * (thread + 1) / threads;
+            for (long first = begin; first < end; first += kBlockPairs)
+            {
+                const int size = int(std::min<long>(kBlockPairs, end - first));
+                int* slot = pairs.contactSlot + first;
+#pragma omp simd
+                for (int k = 0; k < size; ++k)
+                {
+                    const bool touch = local.mayTouch(first + k);
+                    local.keepHistoryIf(touch, first + k);
+                    slot[k] = touch;
+                }
+                int count = 0;
+                for (int k = 0; k < size; ++k)
+                {
+                    const int touch = slot[k]; // 0 or 1; arithmetic, not a branch
+                    pair[count] = int(first) + k; // overwritten unless touch
+                    slot[k] = touch * (int(first) + count + 1);
+                    count += touch;
+                }
+                for (int c = 0; c < count; ++c)
+                {
+                    const long p = pair[c];
+                    owner[c] = pairs.owner[p];
+                    partner[c] = pairs.partner[p];
+                    for (int v = 0; v < kHistory; ++v)
+                        history[v * kBlockPairs + c] = pairs.history[p + v * hs];
+                }
+#pragma omp simd
+                for (int c = 0; c < count; ++c)
+                    local.evaluate(owner[c], partner[c], history + c, kBlockPairs,
+                                   first + c + 1);
+                for (int c = 0; c < count; ++c)
+                    for (int v = 0; v < kHistory; ++v)
+                        pairs.history[pair[c] + v * hs] = history[v * kBlockPairs + c];
+            }
         } // the join is the only barrier
     }
 

@@ -271,8 +271,9 @@ private:
                         [&](auto law, auto)
                         {
                             using Kernel = PairForceKernel<decltype(shapes), decltype(law)>;
-                            Exec::forEachPair(pairs_.count(), Kernel{grains_.view(), pairs_.view(),
-                                                                     boxView(), law});
+                            const PairView view = pairs_.view();
+                            Exec::forEachTouchingPair(
+                                view.count, Kernel{grains_.view(), view, boxView(), law});
                         });
             });
     }

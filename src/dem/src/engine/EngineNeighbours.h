@@ -134,8 +134,7 @@ void EngineImpl<Exec>::rebuild()
     pairs_.owner.resize(pairCount);
     pairs_.partner.resize(pairCount);
     pairs_.history.resize(3 * kHistoryVectors * pairCount);
-    pairs_.reactionComponents = reactionComponents();
-    pairs_.reaction.resize(pairs_.reactionComponents * pairCount); // set by the force pass
+    pairs_.sizeLoads(reactionComponents()); // the records are filled by the force pass
     Exec::forEach(n, FillOwnedPairs{search, thrust::raw_pointer_cast(pairs_.start.data()),
                                     thrust::raw_pointer_cast(pairs_.owner.data()),
                                     thrust::raw_pointer_cast(pairs_.partner.data())});

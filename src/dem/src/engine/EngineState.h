@@ -193,9 +193,8 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     fromHost(ints("pairs.incomingStart"), pairs_.incomingStart);
     fromHost(ints("pairs.incomingPair"), pairs_.incomingPair);
     fromHost(entry(s.reals, "pairs.history"), pairs_.history);
-    pairs_.reactionComponents = reactionComponents();
-    pairs_.reaction.assign(pairs_.reactionComponents * pairs_.partner.size(), 0.0);
     pairs_.owner.resize(pairs_.partner.size());
+    pairs_.sizeLoads(reactionComponents());
     if (pairs_.history.size() != 3 * kHistoryVectors * pairs_.partner.size())
         throw Error("importState: pair history and pair list sizes disagree");
     if (pairs_.start.empty() || long(pairs_.start.back()) != long(pairs_.partner.size()))

@@ -22,6 +22,8 @@ struct PairStorage
 
     Vec<int> start = Vec<int>(1, 0), owner, partner, incomingStart = Vec<int>(1, 0), incomingPair;
     Vec<double> history, reaction;
+    //- Per pair its record of the loads or 0 (PairView::contactSlot).
+    Vec<int> contactSlot;
     //- Systems with bonds: 1 for a pair whose grains are bonded (the bond acts, not the
     //- contact law), set after every rebuild, formation and removal.
     Vec<int> bonded;
@@ -38,17 +40,27 @@ struct PairStorage
     {
         PairView v;
         v.count = count();
-        v.componentStride = Exec::kPairMajor ? 1 : v.count;
+        v.componentStride = Exec::kPairMajor ? 1 : v.count + 1;
         v.reactionPairStride = Exec::kPairMajor ? reactionComponents : 1;
         v.start = thrust::raw_pointer_cast(start.data());
         v.owner = thrust::raw_pointer_cast(owner.data());
         v.partner = thrust::raw_pointer_cast(partner.data());
         v.history = thrust::raw_pointer_cast(history.data());
         v.reaction = thrust::raw_pointer_cast(reaction.data());
+        v.contactSlot = thrust::raw_pointer_cast(contactSlot.data());
         v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
         v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
         v.bonded = thrust::raw_pointer_cast(bonded.data());
         return v;
+    }
+
+    //- Loads for the current list (components per record): the zero record and one per pair,
+    //- all zero, every pair pointing at the zero record until the next force pass.
+    void sizeLoads(int components)
+    {
+        reactionComponents = components;
+        reaction.assign(std::size_t(components) * std::size_t(count() + 1), 0.0);
+        contactSlot.assign(std::size_t(count()), 0);
     }
 
     void swap(PairStorage& other)
@@ -60,6 +72,7 @@ struct PairStorage
         incomingPair.swap(other.incomingPair);
         history.swap(other.history);
         reaction.swap(other.reaction);
+        contactSlot.swap(other.contactSlot);
         bonded.swap(other.bonded);
         std::swap(reactionComponents, other.reactionComponents);
     }

@@ -235,10 +235,12 @@ struct GrainForceKernel
     }
 };
 
-//- Per pair of the half list: the contact law when the grains overlap, else zero loads and
-//- a cleared history. Straight-line code (selects, no branches) so that the CPU loop
-//- vectorises across pairs (both shape families); one thread per pair on the GPU. Owner and
-//- partner sums are GatherKick's, in a fixed order.
+//- Per pair of the half list that may touch (the execution policy's forEachTouchingPair picks
+//- them with mayTouch; the others get a cleared history and the zero record): the contact law
+//- when the grains overlap, else zero loads and a cleared history, into the pair's own record.
+//- Straight-line code (selects, no branches) so that the CPU loop vectorises across pairs
+//- (both shape families); one thread per pair on the GPU. Owner and partner sums are
+//- GatherKick's, in a fixed order.
 template <class Shapes, class Law>
 struct PairForceKernel
 {
@@ -255,17 +257,64 @@ struct PairForceKernel
         return Vector3d(x, y, z);
     }
 
-    DEM_HD void operator()(long p) const
-    {
-        if constexpr (Shapes::kCapsules)
-            capsulePair(p);
-        else
-            spherePair(p);
-    }
-
-    DEM_HD void spherePair(long p) const
+    //- Whether pair p may touch: centres closer than the radii sum (the spheres' own test, the
+    //- same arithmetic as spherePair's) or, with capsules, than the bounding radii (radius +
+    //- core half length) of both. Widened by kMayTouchMargin, so that no rounding difference
+    //- between this test and the kernel's can leave a contact out: the kernel decides.
+    DEM_HD bool mayTouch(long p) const
     {
         const long i = pairs.owner[p], j = pairs.partner[p];
+        const double* xr = g.packedPositionRadius;
+        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
+        double reach = xr[4 * i + 3] + xr[4 * j + 3];
+        if constexpr (Shapes::kCapsules)
+            reach += g.coreHalfLength[i] + g.coreHalfLength[j];
+        bool may = d.squaredNorm() < (1.0 + kMayTouchMargin) * (reach * reach);
+        // A bonded pair is the bond's: zero contact loads and a cleared history, so that the
+        // contact law starts afresh from the overlap it finds when the bond breaks. (The flag
+        // is read for every pair: a load behind && would be conditional, and the loop would
+        // not vectorise.)
+        if constexpr (Shapes::kBonds)
+        {
+            const bool unbonded = pairs.bonded[p] == 0;
+            may = may & unbonded;
+        }
+        return may;
+    }
+    static constexpr double kMayTouchMargin = 1e-9;
+
+    //- A pair that cannot touch forgets its tangential history (a select, not a branch: the CPU
+    //- loop stays vectorised); one that may touch keeps it for the contact law.
+    DEM_HD void keepHistoryIf(bool mayTouchNow, long p) const
+    {
+        const long hs = pairs.historyStride();
+        for (int c = 0; c < 3 * kHistoryVectors; ++c)
+        {
+            const double kept = pairs.history[p + c * hs];
+            pairs.history[p + c * hs] = mayTouchNow ? kept : 0.0;
+        }
+    }
+
+    //- Pair p (which may touch): its loads into its own record, p + 1 (the GPU's pass).
+    DEM_HD void operator()(long p) const
+    {
+        evaluate(pairs.owner[p], pairs.partner[p], pairs.history + p, pairs.historyStride(),
+                 p + 1);
+    }
+
+    //- The pair of grains i < j that may touch: its history h[c * hs] (c < 3 kHistoryVectors)
+    //- read and written, its loads into record r. The CPU's pass calls it on a block's
+    //- pairs that may touch, their history copied into a contiguous scratch.
+    DEM_HD void evaluate(long i, long j, double* h, long hs, long r) const
+    {
+        if constexpr (Shapes::kCapsules)
+            capsulePair(i, j, h, hs, r);
+        else
+            spherePair(i, j, h, hs, r);
+    }
+
+    DEM_HD void spherePair(long i, long j, double* h, long hs, long r) const
+    {
         const double* xr = g.packedPositionRadius;
         const double* vw = g.packedVelocities;
         const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
@@ -288,11 +337,9 @@ struct PairForceKernel
 
         constexpr int kReactionComponents = kSphereReactionComponents;
         const long cs = pairs.stride();
-        const long r0 = p * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
-        double* h = pairs.history;
+        const long r0 = r * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* out = pairs.reaction;
-        const long hs = pairs.historyStride();
-        Vector3d history = load(h, p, hs);
+        Vector3d history = load(h, 0, hs);
         const ContactLoads loads = sphereContact(
             law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4),
             load(vw, 8 * j + 4), history, ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
@@ -307,16 +354,15 @@ struct PairForceKernel
         value[9] = touching ? loads.leverI : 0.0;
         value[10] = touching ? loads.leverJ : 0.0;
         for (int c = 0; c < 3; ++c)
-            h[p + c * hs] = value[c];
+            h[c * hs] = value[c];
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
     }
 
     //- Cores' closest points (CapsuleGeometry.h; a sphere's core is its centre), the contact
     //- at the middle of the overlap, the full torques on both grains.
-    DEM_HD void capsulePair(long p) const
+    DEM_HD void capsulePair(long i, long j, double* h, long hs, long r) const
     {
-        const long i = pairs.owner[p], j = pairs.partner[p];
         const double* xr = g.packedPositionRadius;
         const double* vw = g.packedVelocities;
         const double* ax = g.packedHalfAxis;
@@ -324,27 +370,16 @@ struct PairForceKernel
         const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
         const CapsulePairGeometry geometry =
             capsulePairGeometry(d, load(ax, 4 * i), load(ax, 4 * j), ri, rj);
-        // A bonded pair is the bond's: zero contact loads and a cleared history, so that the
-        // contact law starts afresh from the overlap it finds when the bond breaks. (The flag is
-        // read for every pair: a load behind && would be conditional, and the loop would not
-        // vectorise.)
-        bool touching = geometry.touching;
-        if constexpr (Shapes::kBonds)
-        {
-            const bool unbonded = pairs.bonded[p] == 0;
-            touching = touching & unbonded;
-        }
+        const bool touching = geometry.touching; // bonded pairs never come here (mayTouch)
 
         constexpr int kReactionComponents = kCapsuleReactionComponents;
         const long cs = pairs.stride();
         // The run-time stride (kCapsuleReactionComponents on the CPU): GCC 12 vectorises a
         // group of 9 stores at a constant stride only by permutes it does not have (not a power
         // of 2), but stores at an unknown stride element by element.
-        const long r0 = p * pairs.reactionPairStride;
-        double* h = pairs.history;
+        const long r0 = r * pairs.reactionPairStride;
         double* out = pairs.reaction;
-        const long hs = pairs.historyStride();
-        Vector3d history = load(h, p, hs);
+        Vector3d history = load(h, 0, hs);
         const PointContactLoads loads =
             pointContact(law, geometry.normal, geometry.overlap, geometry.offsetI, geometry.offsetJ,
                          load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4), load(vw, 8 * j + 4),
@@ -358,7 +393,7 @@ struct PairForceKernel
             value[9 + c] = touching ? loads.torqueOnJ[c] : 0.0;
         }
         for (int c = 0; c < 3; ++c)
-            h[p + c * hs] = value[c];
+            h[c * hs] = value[c];
         for (int c = 0; c < kReactionComponents; ++c)
             out[r0 + c * cs] = value[3 + c];
     }
@@ -386,7 +421,7 @@ struct GatherKick
         grainLoads.prefetchWallState(j + GrainForceKernel<Shapes, WallLaw>::kWallPrefetchDistance);
         Vector3d force, torque;
         grainLoads.add(j, force, torque);
-        // Pairs j owns, then pairs j is the partner of (open pairs hold zero loads), in one
+        // Pairs j owns, then pairs j is the partner of (open pairs read zero loads), in one
         // loop: one hard-to-predict loop exit per grain instead of two. x + (-y) is x - y.
         const long cs = pairs.stride();
         const int firstOwned = pairs.start[j], owned = pairs.start[j + 1] - firstOwned;
@@ -396,7 +431,7 @@ struct GatherKick
         {
             const bool own = k < owned;
             const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
-            const double* loads = pairs.template reactionOf<Shapes::kReactionComponents>(p);
+            const double* loads = pairs.template loadsOf<Shapes::kReactionComponents>(p);
             const double sign = own ? 1.0 : -1.0;
             force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);
             if constexpr (Shapes::kCapsules)
