@@ -49,7 +49,7 @@ void usage()
                  "10 m/s with random velocities (--seed), or the start saved with "
                  "--write-packing (x y z r vx vy vz) as --packing; no drag, --relax-steps are "
                  "an untimed lead-in\n"
-                 "--steps 0: set up (and --write-packing) only\n";
+                 "--write-packing FILE --steps 0: set up and save the start only\n";
 }
 
 //- Translational kinetic energy [J] and sum of |omega| components [rad/s] of the grains.
@@ -221,10 +221,12 @@ int main(int argc, char** argv)
             packing = dem::capsulePacking(packing, p, drag, capsules);
         if (!writeFile.empty())
             dem::writePacking(writeFile, packing);
-        if (steps == 0)
+        // --write-packing with --steps 0: the start saved, nothing run (without --write-packing,
+        // --steps 0 still makes the System and prints the last line: bin/gpuCheck's probe)
+        if (!writeFile.empty() && steps == 0)
         {
-            std::printf("demBench: --steps 0: %zu grains set up%s, nothing run\n",
-                        packing.grains.size(), writeFile.empty() ? "" : " and written");
+            std::printf("demBench: --steps 0: %zu grains set up and written to %s, nothing run\n",
+                        packing.grains.size(), writeFile.c_str());
             return 0;
         }
         // The shape of the grains timed (a capsule packing may come from the file)
@@ -298,7 +300,8 @@ int main(int argc, char** argv)
         std::printf("%s %d steps, timed %d steps in %.4f s, %zu neighbour rebuild(s) "
                     "while timed (%.3g per 1000 steps), %.3f list pairs per grain\n",
                     pour ? "lead-in" : "relaxation", relaxSteps, steps, seconds, rebuilds,
-                    1000.0 * double(rebuilds) / steps, double(system.pairCount()) / double(n));
+                    steps > 0 ? 1000.0 * double(rebuilds) / steps : 0.0,
+                    double(system.pairCount()) / double(n));
         // On a shared machine the CPU time shows what the code costs when it is not waiting.
         std::printf("timed phase used %.4f s of CPU time (%.3g particle-steps per CPU-second)\n",
                     cpuSeconds, double(n) * steps / cpuSeconds);
