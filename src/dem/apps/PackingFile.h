@@ -1,7 +1,9 @@
 // PackingFile.h
 // Reader and writer of the benchmark packing files (src/dem/bench/packings): a header line
-// "# L Lz N", then one grain per line "x y z r" in metres; a capsule adds its core half-length
-// and orientation, "x y z r h qw qx qy qz" (demBench --shape capsule --write-packing).
+// "# L Lz N", then one grain per line "x y z r" in metres; a moving sphere adds its velocity,
+// "x y z r vx vy vz" [m/s] (the flowing benchmark's start, demBench --pour --write-packing); a
+// capsule adds its core half-length and orientation, "x y z r h qw qx qy qz" (demBench --shape
+// capsule --write-packing).
 #pragma once
 
 #include "dem/Parameters.h"

@@ -4,11 +4,15 @@
 // damping. --shape capsule --aspect A: the same with capsules made from the packing
 // (CapsulePacking.h). --bonds: the same with bonds (every touching pair frozen at the first
 // step, formation checks every 10 steps, elastic patch with Maxwell creep), the cost of bonds
-// against the same grains without. The last line is machine-readable:
+// against the same grains without. --pour: the flowing benchmark instead (PourPacking.h; no drag,
+// 1000 untimed lead-in steps, 4000 timed steps, the neighbour lists rebuilt every few hundred
+// steps). The last line is machine-readable:
 //   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>
-//   shape=<sphere|capsule> aspect=<number> bonds=<intact bonds per grain>
+//   shape=<sphere|capsule> aspect=<number> bonds=<intact bonds per grain> steps=<timed steps>
+//   rebuilds=<neighbour rebuilds while timed> skin=<m> problem=<standard|pour>
 #include "CapsulePacking.h"
 #include "PackingFile.h"
+#include "PourPacking.h"
 #include "dem/System.h"
 
 #include <algorithm>
@@ -31,6 +35,8 @@ void usage()
                  "[--threads T] [--backend auto|cpu|cuda] [--skin 2e-3] [--replicate NXxNY]\n"
                  "                [--shape sphere|capsule] [--aspect 3] [--seed 1] "
                  "[--write-packing FILE] [--bonds]\n"
+                 "       demBench --pour [--grains 10000 | --packing FILE] [--seed 1] "
+                 "[--relax-steps 1000] [--steps 4000] [--skin S] ...\n"
                  "--replicate 10x1: NX x NY copies of the periodic packing side by side, "
                  "box NX L x NY L\n"
                  "--shape capsule: the packing's grains as capsules of the same volume and "
@@ -38,7 +44,34 @@ void usage()
                  "contacts stiffened stage by stage (untimed); --write-packing saves it "
                  "(x y z r h qw qx qy qz per capsule) for --packing\n"
                  "--bonds: bonds on (frozen on contact, checked every 10 steps; elastic patch "
-                 "at most as stiff as the contacts, Maxwell creep)\n";
+                 "at most as stiff as the contacts, Maxwell creep)\n"
+                 "--pour: the flowing benchmark: --grains spheres on a loose lattice falling at "
+                 "10 m/s with random velocities (--seed), or the start saved with "
+                 "--write-packing (x y z r vx vy vz) as --packing; no drag, --relax-steps are "
+                 "an untimed lead-in\n"
+                 "--write-packing FILE --steps 0: set up and save the start only\n";
+}
+
+//- Translational kinetic energy [J] and sum of |omega| components [rad/s] of the grains.
+std::pair<double, double> motionOf(const dem::GrainData& state)
+{
+    double kinetic = 0.0, rotationRate = 0.0;
+    for (std::size_t i = 0; i < state.mass.size(); ++i)
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            kinetic += 0.5 * state.mass[i] * state.velocity[3 * i + d] * state.velocity[3 * i + d];
+            rotationRate += std::fabs(state.angularVelocity[3 * i + d]);
+        }
+    return {kinetic, rotationRate};
+}
+
+//- The grains to start from: the packing file, else (--pour) the generated pour.
+dem::Packing startingGrains(const std::string& file, bool pour, const dem::PourSettings& settings,
+                            double density)
+{
+    if (pour && file.empty())
+        return dem::pourPacking(settings, density);
+    return dem::readPacking(file, density);
 }
 
 //- "NXxNY" (e.g. 10x1) as two positive counts.
@@ -92,7 +125,7 @@ dem::Backend parseBackend(const std::string& name)
 int main(int argc, char** argv)
 {
     std::string packingFile;
-    int relaxSteps = 1000, steps = 2000, threads = 0;
+    int relaxSteps = 1000, steps = -1, threads = 0; // steps: 2000, 4000 with --pour
     // Verlet skin 2e-3 m = 0.1 d, the benchmark's common setting (bench/README.md): every code
     // is timed with it. A thinner skin (--skin) lists fewer pairs and pays only in this
     // quasi-static problem, where nothing moves; in a flowing bed it means a rebuild every few
@@ -101,8 +134,9 @@ int main(int argc, char** argv)
     dem::Backend backend = dem::Backend::automatic;
     std::pair<int, int> copies{1, 1};
     std::string shape = "sphere", writeFile;
-    bool bonds = false;
+    bool bonds = false, pour = false;
     dem::CapsulePackingSettings capsules;
+    dem::PourSettings pourSettings;
     try
     {
         for (int a = 1; a < argc; ++a)
@@ -139,9 +173,13 @@ int main(int argc, char** argv)
             else if (arg == "--write-packing")
                 writeFile = value();
             else if (arg == "--seed")
-                capsules.seed = unsigned(std::stoul(value()));
+                capsules.seed = pourSettings.seed = unsigned(std::stoul(value()));
             else if (arg == "--bonds")
                 bonds = true;
+            else if (arg == "--pour")
+                pour = true;
+            else if (arg == "--grains")
+                pourSettings.grains = std::stol(value());
             else if (arg == "--friction") // profiling aid: 0 skips the tangential spring
                 friction = std::stod(value());
             else if (arg == "-h" || arg == "--help")
@@ -152,14 +190,18 @@ int main(int argc, char** argv)
             else
                 throw dem::Error("unknown option '" + arg + "'");
         }
-        if (packingFile.empty())
+        if (packingFile.empty() && !pour)
         {
             usage();
             return 2;
         }
+        if (steps < 0)
+            steps = pour ? 4000 : 2000;
+        if (pour && shape == "capsule")
+            throw dem::Error("--pour is a benchmark of spheres (no --shape capsule)");
 
         const double density = 2600.0;
-        dem::Packing packing = dem::readPacking(packingFile, density);
+        dem::Packing packing = startingGrains(packingFile, pour, pourSettings, density);
         replicate(packing, copies.first, copies.second);
         dem::Parameters p;
         p.grainGrain = {1.16e9, 1.16e9, 0.0, 0.0, friction};
@@ -179,6 +221,14 @@ int main(int argc, char** argv)
             packing = dem::capsulePacking(packing, p, drag, capsules);
         if (!writeFile.empty())
             dem::writePacking(writeFile, packing);
+        // --write-packing with --steps 0: the start saved, nothing run (without --write-packing,
+        // --steps 0 still makes the System and prints the last line: bin/gpuCheck's probe)
+        if (!writeFile.empty() && steps == 0)
+        {
+            std::printf("demBench: --steps 0: %zu grains set up and written to %s, nothing run\n",
+                        packing.grains.size(), writeFile.c_str());
+            return 0;
+        }
         // The shape of the grains timed (a capsule packing may come from the file)
         double aspect = 1.0;
         for (const dem::GrainInit& g : packing.grains)
@@ -216,15 +266,26 @@ int main(int argc, char** argv)
         std::printf("demBench: %s x %dx%d, N = %ld, L = %g m, dt = %g s, skin = %g m, "
                     "backend %s, %d thread(s), %s, solid fraction %.3f (bed) / %.3f "
                     "(0.05 < z < 0.30 m)\n",
-                    packingFile.c_str(), copies.first, copies.second, n, packing.length, p.timeStep,
-                    skin, system.backendName().c_str(), system.threadCount(),
+                    pour && packingFile.empty() ? "pour" : packingFile.c_str(), copies.first,
+                    copies.second, n, packing.length, p.timeStep, skin,
+                    system.backendName().c_str(), system.threadCount(),
                     shape == "capsule" ? ("capsules of aspect " + std::to_string(aspect)).c_str()
                                        : "spheres",
                     bed, interior);
 
-        system.setViscousDrag(drag);
+        if (pour) // the kinetic energy the lead-in starts from (its change is the check)
+            std::printf("start: translational kinetic energy %.10g J\n",
+                        motionOf(system.grains()).first);
+        system.setViscousDrag(pour ? 0.0 : drag);
         system.step(relaxSteps);
         system.setViscousDrag(0.0);
+        // The start of the timed phase, for comparisons with other codes (--pour: before the
+        // flow turns chaotic)
+        const std::pair<double, double> lead = motionOf(system.grains());
+        std::printf("after %d %s steps: translational kinetic energy %.10g J, sum |omega| %.10g "
+                    "rad/s, %.4f contacts per grain\n",
+                    relaxSteps, pour ? "lead-in" : "relaxation", lead.first, lead.second,
+                    2.0 * double(system.contactCount()) / double(n));
         const std::size_t rebuildsBefore = system.neighbourRebuildCount();
         const double cpuStart = processCpuSeconds();
         const auto start = std::chrono::steady_clock::now();
@@ -235,30 +296,26 @@ int main(int argc, char** argv)
         const double rate = double(n) * steps / seconds;
         const double contactsPerGrain = 2.0 * double(system.contactCount()) / double(n);
         const double bondsPerGrain = double(system.bondCounts().intact) / double(n);
-        std::printf("relaxation %d steps, timed %d steps in %.4f s, %zu neighbour rebuild(s) "
-                    "while timed, %.3f list pairs per grain\n",
-                    relaxSteps, steps, seconds, system.neighbourRebuildCount() - rebuildsBefore,
+        const std::size_t rebuilds = system.neighbourRebuildCount() - rebuildsBefore;
+        std::printf("%s %d steps, timed %d steps in %.4f s, %zu neighbour rebuild(s) "
+                    "while timed (%.3g per 1000 steps), %.3f list pairs per grain\n",
+                    pour ? "lead-in" : "relaxation", relaxSteps, steps, seconds, rebuilds,
+                    steps > 0 ? 1000.0 * double(rebuilds) / steps : 0.0,
                     double(system.pairCount()) / double(n));
         // On a shared machine the CPU time shows what the code costs when it is not waiting.
         std::printf("timed phase used %.4f s of CPU time (%.3g particle-steps per CPU-second)\n",
                     cpuSeconds, double(n) * steps / cpuSeconds);
         // The state after the timed phase, all digits: an optimisation that claims to keep the
         // physics must keep these (same thread count and backend).
-        const dem::GrainData state = system.grains();
-        double kinetic = 0.0, rotationRate = 0.0;
-        for (long i = 0; i < n; ++i)
-            for (int d = 0; d < 3; ++d)
-            {
-                kinetic +=
-                    0.5 * state.mass[i] * state.velocity[3 * i + d] * state.velocity[3 * i + d];
-                rotationRate += std::fabs(state.angularVelocity[3 * i + d]);
-            }
+        const std::pair<double, double> motion = motionOf(system.grains());
         std::printf("final translational kinetic energy %.17g J, sum |omega| %.17g rad/s\n",
-                    kinetic, rotationRate);
+                    motion.first, motion.second);
         std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
-                    "contacts_per_grain=%.4f shape=%s aspect=%g bonds=%.4f\n",
+                    "contacts_per_grain=%.4f shape=%s aspect=%g bonds=%.4f steps=%d "
+                    "rebuilds=%zu skin=%g problem=%s\n",
                     rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain,
-                    shape.c_str(), aspect, bondsPerGrain);
+                    shape.c_str(), aspect, bondsPerGrain, steps, rebuilds, skin,
+                    pour ? "pour" : "standard");
         return 0;
     }
     catch (const std::exception& e)
