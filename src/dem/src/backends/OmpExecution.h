@@ -80,7 +80,7 @@ struct OmpExecution
                 int count = 0;
                 for (int k = 0; k < size; ++k)
                 {
-                    const int touch = slot[k]; // 0 or 1; arithmetic, not a branch
+                    const int touch = slot[k];    // 0 or 1; arithmetic, not a branch
                     pair[count] = int(first) + k; // overwritten unless touch
                     slot[k] = touch * (int(first) + count + 1);
                     count += touch;
@@ -95,8 +95,7 @@ struct OmpExecution
                 }
 #pragma omp simd
                 for (int c = 0; c < count; ++c)
-                    local.evaluate(owner[c], partner[c], history + c, kBlockPairs,
-                                   first + c + 1);
+                    local.evaluate(owner[c], partner[c], history + c, kBlockPairs, first + c + 1);
                 for (int c = 0; c < count; ++c)
                     for (int v = 0; v < kHistory; ++v)
                         pairs.history[pair[c] + v * hs] = history[v * kBlockPairs + c];

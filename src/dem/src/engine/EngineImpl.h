@@ -272,8 +272,8 @@ private:
                         {
                             using Kernel = PairForceKernel<decltype(shapes), decltype(law)>;
                             const PairView view = pairs_.view();
-                            Exec::forEachTouchingPair(
-                                view.count, Kernel{grains_.view(), view, boxView(), law});
+                            Exec::forEachTouchingPair(view.count,
+                                                      Kernel{grains_.view(), view, boxView(), law});
                         });
             });
     }

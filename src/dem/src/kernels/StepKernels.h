@@ -298,8 +298,7 @@ struct PairForceKernel
     //- Pair p (which may touch): its loads into its own record, p + 1 (the GPU's pass).
     DEM_HD void operator()(long p) const
     {
-        evaluate(pairs.owner[p], pairs.partner[p], pairs.history + p, pairs.historyStride(),
-                 p + 1);
+        evaluate(pairs.owner[p], pairs.partner[p], pairs.history + p, pairs.historyStride(), p + 1);
     }
 
     //- The pair of grains i < j that may touch: its history h[c * hs] (c < 3 kHistoryVectors)
