@@ -177,7 +177,7 @@ def test_step_timers_account_for_the_loop(app):
         os.remove(c.file("0/p"))
     log = c.run(app)
     steps, seconds, rate = step_timer_table(log)
-    phases = ["DEM steps", "deposit", "pressure", "gradient", "exchange", "write", "other"]
+    phases = ["DEM steps", "deposit", "momentum", "pressure", "gradient", "exchange", "write", "other"]
     print(f"{app}: {steps} fluid steps, {seconds}, {rate:.4g} grain-steps/s")
     assert steps == 100  # 0.01 s of 1e-4 s fluid steps
     assert sorted(seconds) == sorted(phases + ["total"])
@@ -186,4 +186,4 @@ def test_step_timers_account_for_the_loop(app):
     printed = 5e-4 + 5e-4 / seconds["total"]  # relative rounding of rate and total
     assert rate * seconds["total"] == pytest.approx(grains * sub_steps * steps, rel=printed)
     if app == "demFoam":  # no fluid: nothing timed in the fluid's phases
-        assert seconds["pressure"] == seconds["gradient"] == seconds["exchange"] == 0
+        assert seconds["momentum"] == seconds["pressure"] == seconds["gradient"] == seconds["exchange"] == 0

@@ -101,3 +101,13 @@ def test_unknown_fluid_force_lists_the_models():
         "constant/darcyProperties", "solidPhase/fluidForce/type", "stokes"))
     assert "Unknown fluid force type stokes" in log and "darcyProperties" in log
     assert all(name in log.split("Valid fluid force types")[1] for name in VALID)
+
+
+def test_drag_law_is_refused_by_the_darcy_solver():
+    """A drag law needs the fluid velocity of a solver with fluid momentum
+    (nsDemFoam): darcyDemFoam stops naming the entry and its own models."""
+    log = failing_column("force_drag_law", lambda c: c.set(
+        "constant/darcyProperties", "solidPhase/fluidForce/type", "ErgunWenYu"))
+    assert "Entry 'type'" in log and "darcyProperties" in log and "ErgunWenYu" in log
+    assert "is a drag law" in log and "nsDemFoam" in log
+    assert all(name in log.split("a Darcy solver takes one of")[1] for name in VALID)

@@ -88,7 +88,15 @@ int main(int argc, char *argv[])
     );
 
     // Dry: no fluid force, deposited at write times only
-    grainCoupling grains(mesh, dictionary(), false, porosity, porosityRate, Us);
+    grainCoupling grains
+    (
+        mesh,
+        dictionary(),
+        grainCoupling::fluidKind::dry,
+        porosity,
+        porosityRate,
+        Us
+    );
 
     // Wall clock of the loop by phase, as darcyDemFoam prints it (no fluid:
     // no pressure, gradient or exchange); the set-up above is left out

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainCoupling.H"
+#include "dragLaw.H"
 #include "inputChecks.H"
 #include "latestCompleteTime.H"
 #include "zeroGradientFvPatchFields.H"
@@ -21,6 +22,12 @@ Foam::grainCoupling::porosityRateFormNames
 const Foam::wordList Foam::grainCoupling::entryNames
 ({
     "porosityMin", "porosityMax", "topPressure", "porosityRate", "fluidForce"
+});
+
+
+const Foam::wordList Foam::grainCoupling::momentumEntryNames
+({
+    "porosityMin", "porosityMax", "porosityRate", "fluidForce"
 });
 
 
@@ -58,28 +65,40 @@ Foam::grainCoupling::grainCoupling
 (
     const fvMesh& mesh,
     const dictionary& dict,
-    const bool coupled,
+    const fluidKind kind,
     volScalarField& porosity,
     volScalarField& porosityRate,
     volVectorField& Us
 )
 :
     mesh_(mesh),
-    coupled_(coupled),
+    kind_(kind),
+    coupled_(kind != fluidKind::dry),
     cloud_(mesh),
-    fluidForce_(coupled ? fluidForceModel::New(dict) : nullptr),
+    fluidForce_
+    (
+        coupled_
+      ? fluidForceModel::New
+        (
+            kind == fluidKind::momentum
+          ? inputChecks::checkKnownEntries(dict, momentumEntryNames)
+          : dict,
+            kind == fluidKind::momentum
+        )
+      : nullptr
+    ),
     porosityMin_
     (
-        coupled ? inputChecks::getInOpenRange(dict, "porosityMin", 0, 1) : 0
+        coupled_ ? inputChecks::getInOpenRange(dict, "porosityMin", 0, 1) : 0
     ),
     porosityMax_
     (
-        coupled ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
+        coupled_ ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
     ),
-    topPressure_(coupled ? dict.get<scalar>("topPressure") : 0),
+    topPressure_(kind == fluidKind::darcy ? dict.get<scalar>("topPressure") : 0),
     rateForm_
     (
-        coupled
+        coupled_
       ? porosityRateFormNames.getOrDefault
         (
             "porosityRate",
@@ -103,6 +122,22 @@ Foam::grainCoupling::grainCoupling
         ),
         mesh,
         dimensionedScalar("porosity", dimless, 1),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    dragCoefficient_
+    (
+        IOobject
+        (
+            "dragCoefficient",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            kind == fluidKind::momentum
+          ? IOobject::AUTO_WRITE
+          : IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimDensity/dimTime, Zero),
         zeroGradientFvPatchScalarField::typeName
     ),
     timers_(stepTimers::New(mesh))
@@ -193,6 +228,46 @@ void Foam::grainCoupling::setFluid
 {
     stepTimers::scope timed(timers_, stepTimers::exchange);
     cloud_.setFluidForce(forceDensity, dragCoefficient, fluidVelocity, rhoFluid);
+}
+
+
+void Foam::grainCoupling::setFlow
+(
+    const volVectorField& gradp,
+    const volVectorField& U,
+    const scalar rhoFluid,
+    const scalar muFluid
+)
+{
+    stepTimers::scope timed(timers_, stepTimers::exchange);
+    const fluidForceModels::dragLaw& law =
+        refCast<const fluidForceModels::dragLaw>(fluidForce_());
+    dragCoefficient_ = law.dragCoefficient
+    (
+        porosity_,
+        U - Us_,
+        porosityMax_,
+        rhoFluid,
+        muFluid,
+        law.diameter(cloud_.meanDiameter())
+    );
+    cloud_.setFluidForce
+    (
+        law.forceDensity(gradp, porosity_)(),
+        dragCoefficient_,
+        U,
+        rhoFluid
+    );
+}
+
+
+Foam::vector Foam::grainCoupling::gravity() const
+{
+    const Time& runTime = mesh_.time();
+    return cloud_.walls().gravity
+    (
+        runTime.value() - 0.5*runTime.deltaTValue()
+    );
 }
 
 

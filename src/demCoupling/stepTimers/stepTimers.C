@@ -20,6 +20,7 @@ const char* const Foam::stepTimers::names_[nPhases] =
 {
     "DEM steps",
     "deposit",
+    "momentum",
     "pressure",
     "gradient",
     "exchange",

@@ -27,7 +27,15 @@ Foam::solidPhases::demGrains::demGrains
 )
 :
     solidPhase(mesh, dict, grainCoupling::entryNames),
-    coupling_(mesh, dict, true, porosity_, porosityRate_, Us_)
+    coupling_
+    (
+        mesh,
+        dict,
+        grainCoupling::fluidKind::darcy,
+        porosity_,
+        porosityRate_,
+        Us_
+    )
 {}
 
 
