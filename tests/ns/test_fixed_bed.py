@@ -1,0 +1,188 @@
+"""nsDemFoam, a fixed bed (issue 25): steady flow up through a frozen
+simple-cubic lattice of equal spheres in a periodic column
+(tests/cases/fixedBed), the pressure gradient in the bed's interior against
+the closed form of the drag law (bin/darcydem/drag.py), and the momentum
+balance of the whole column.
+
+The bed. Spheres of d = 1 mm on a simple cubic lattice of spacing
+a = 1.0001 d (no two touch: no contacts, the grains are 'fixed'), 6 x 6 per
+layer in a column of 2 x 2 cells, 36 layers; cells of h = 3 a, so a cell holds
+3 x 3 x 3 lattice sites. The trilinear deposit (doc/EQUATIONS.md 6) of a
+lattice of spacing h/3 sums to exactly 3 per direction at every cell centre
+that has all lattice sites within h on both sides (the hat function is
+linear between lattice sites): the porosity there is exactly
+1 - (pi/6) (d/a)^3 = 0.476558, the bed's true porosity. The bed's first and
+last cell layers (and the empty layers next to them) get part of it; 3 empty
+cell layers below (inlet) and above (outlet), 20 bed layers.
+
+Where the gradient is measured. In a steady uniform 1-D flow the fluid's
+balance is -eps dp/dz = (1 - eps) beta_g u, u = U_s/eps. In the bed's first
+and last layers the porosity (and u) changes, and the grains' pressure-
+gradient force is interpolated from the cells and their reaction deposited
+back (the same trilinear weights): the discrete balance
+grad p - (1 - eps) S grad p = drag, S the smoothing of interpolation and
+deposit, lets grad p reach its uniform value only over a few cells
+(measured, Re_p 0.1: 6.4 %, 1.1 %, 0.23 %, 0.04 %, 0.01 % below it at the
+faces 1 to 5 cells inside the bed's first interior layer). So p is fitted
+(least squares, a line through the layer means) over the 8 layers at least
+6 cells from the bed's edges.
+
+The run: 1000 steps of 2e-3 s (2 s); the fitted gradient has converged to
+1e-7 relative after about 1 s (what converges slowly are the cell
+velocities at the bed's edges and in the empty layers).
+
+Tolerances:
+- ErgunWenYu against Ergun's equation: 5 % at Re_p = rho U_s d/mu = 0.1, 1,
+  10, 100 (the issue's; eps = 0.48 < 0.8: the Ergun branch, whose
+  -dp/dz is Ergun's exactly).
+- DiFelice and Beetstra against their own closed forms (drag.py): 1 %.
+  In the uniform interior the discrete momentum balance is the closed form
+  itself (porosity, u and beta the same in every cell and at every grain);
+  what remains is the steady state (checked: the fitted gradient changes by
+  less than 1e-4 relative between the last two write times), the linear
+  solvers (1e-12 absolute) and the round-off of the fit. 1 % leaves room
+  for a beta evaluated at a lagged u (one fluid step), not for a wrong law:
+  the three laws differ by 8-23 % here.
+- Momentum: at steady state the fluid's momentum balance over the column
+  (periodic sides, the same uniform flow at inlet and outlet, so the same
+  momentum flux) says that the pressure drop over the column times the
+  cross-section equals the grains' fluid force less their buoyancy,
+  sum(F_z - rho_f V g). 1e-3 relative (the issue's); the solver adds the
+  drag that the fluid feels back from the grains' own forces, so the balance
+  should hold to the steady-state residual.
+"""
+
+import math
+import time
+
+import numpy as np
+import pytest
+
+from darcydem import drag
+from darcydem.case import Case
+from darcydem.foamfiles import read_vtp
+
+D = 1e-3                  # sphere diameter [m]
+SPACING = 1.0001 * D      # lattice spacing a
+PER_CELL = 3              # lattice sites per cell width: h = 3 a
+H_CELL = PER_CELL * SPACING
+N_LAT = 2                 # cells across (cyclic)
+N_BELOW, N_BED, N_ABOVE = 3, 20, 3
+NZ = N_BELOW + N_BED + N_ABOVE
+EDGE = 6                  # cells between the bed's edge and the fitted layers
+RHO, MU, G = 1000.0, 1e-3, 9.81
+STEPS, DT = 1000, 2e-3     # fluid steps of the run (steady after about 1 s)
+
+EPS_BED = 1 - math.pi / 6 * (D / SPACING)**3
+AREA = (N_LAT * H_CELL)**2
+
+
+def lattice_rows():
+    """'x y z r' of the bed: N_LAT * PER_CELL sites across, N_BED * PER_CELL
+    layers from the top of the N_BELOW empty cell layers."""
+    n_lat, n_z = N_LAT * PER_CELL, N_BED * PER_CELL
+    z0 = N_BELOW * H_CELL
+    return [((i + 0.5) * SPACING, (j + 0.5) * SPACING, z0 + (k + 0.5) * SPACING, D / 2)
+            for k in range(n_z) for j in range(n_lat) for i in range(n_lat)]
+
+
+def write_grains(path):
+    with open(path, "w") as f:
+        f.write(f"# fixedBed: simple cubic lattice, d = {D!r} m, spacing {SPACING!r} m\n")
+        for row in lattice_rows():
+            f.write(" ".join(repr(v) for v in row) + "\n")
+
+
+def layers(field):
+    """A cell field (n,) as (nz, cells per layer): blockMesh numbers x
+    fastest, then y, then z."""
+    return np.asarray(field).reshape(NZ, N_LAT * N_LAT)
+
+
+def fitted_gradient(case, time_name):
+    """-dp/dz of a line through the layer means of p over the fitted
+    layers, the porosity there, and the largest residual of the line."""
+    p = layers(case.field(time_name, "p"))
+    eps = layers(case.field(time_name, "porosity"))
+    k = np.arange(N_BELOW + EDGE, N_BELOW + N_BED - EDGE)
+    z = (k + 0.5) * H_CELL
+    pm = p[k].mean(axis=1)
+    slope, intercept = np.polyfit(z, pm, 1)
+    residual = np.max(np.abs(pm - (slope * z + intercept))) / abs(slope * H_CELL)
+    return -slope, eps[k], p, residual
+
+
+def run_bed(law, re):
+    """Run the bed at Re_p = rho U_s d/mu; return what the tests compare."""
+    u_s = re * MU / (RHO * D)
+    c = Case("fixedBed", f"fixedBed_{law}_Re{re:g}")
+    c.set_variable("system/blockMeshDict", "L", "%.17g" % (N_LAT * H_CELL))
+    c.set_variable("system/blockMeshDict", "H", "%.17g" % (NZ * H_CELL))
+    c.set_variable("system/blockMeshDict", "n", N_LAT)
+    c.set_variable("system/blockMeshDict", "nz", NZ)
+    c.set("constant/nsDemProperties", "grains/fluidForce/type", law)
+    c.set("0/U", "boundaryField/inlet/value", "uniform (0 0 %.17g)" % u_s)
+    c.set("system/controlDict", "deltaT", DT)
+    c.set("constant/demProperties", "timeStep", DT)
+    c.set("system/controlDict", "endTime", STEPS * DT)
+    c.set("system/controlDict", "writeInterval", STEPS // 4)
+    write_grains(c.file("0/grains"))
+    c.run("blockMesh")
+    start = time.time()
+    c.run("nsDemFoam")
+    wall = time.time() - start
+    (t0, prev), (t1, last) = c.times()[-2:]
+    grad, eps, p, residual = fitted_gradient(c, last)
+    grad_prev = fitted_gradient(c, prev)[0]
+    vtp = read_vtp(c.file(f"postProcessing/grains/grains_{last}.vtp"))
+    return dict(case=c, u_s=u_s, grad=grad, grad_prev=grad_prev, eps=eps, p=p,
+                residual=residual, vtp=vtp, wall=wall, last=last)
+
+
+def check_run(r, law, re):
+    """The checks every run shares: the deposited porosity, the steady
+    state, the line, the momentum balance. Returns the porosity."""
+    eps = r["eps"]
+    print(f"\n{law} Re_p {re:g}: U_s {r['u_s']:.4g} m/s, porosity {eps.mean():.10f} "
+          f"(lattice {EPS_BED:.10f}), -dp/dz {r['grad']:.6g} Pa/m, change over the "
+          f"last {STEPS // 4} steps {abs(r['grad'] / r['grad_prev'] - 1):.1e}, "
+          f"line residual {r['residual']:.1e} of a cell's drop, run {r['wall']:.1f} s")
+    # The deposit of the lattice is uniform in the bed's interior and equal
+    # to the lattice's porosity (round-off of sums of 27 weights)
+    assert np.max(np.abs(eps - EPS_BED)) < 1e-12
+    assert abs(r["grad"] / r["grad_prev"] - 1) < 1e-4, "not steady"
+    assert r["residual"] < 1e-3, "p not linear in the bed's interior"
+
+    # Momentum: pressure drop over the column (inlet zeroGradient: the first
+    # layer's p; outlet fixed at 0) times the area = the grains' fluid force
+    # less buoyancy
+    v = r["vtp"]
+    force = np.sum(v["fluidForce"][:, 2] - RHO * v["volume"] * G)
+    p_in = r["p"][0].mean()
+    balance = force / (p_in * AREA) - 1
+    print(f"  grains' force less buoyancy {force:.8g} N, (p_in - p_out) A "
+          f"{p_in * AREA:.8g} N, relative difference {balance:.1e}")
+    assert abs(balance) < 1e-3
+    return eps.mean()
+
+
+@pytest.mark.parametrize("re", [0.1, 1.0, 10.0, 100.0])
+def test_ergun_wen_yu_against_ergun(re):
+    r = run_bed("ErgunWenYu", re)
+    eps = check_run(r, "ErgunWenYu", re)
+    expected = drag.ergun(eps, r["u_s"], RHO, MU, D)
+    err = r["grad"] / expected - 1
+    print(f"  Ergun {expected:.6g} Pa/m: error {err:+.2e}")
+    assert abs(err) < 0.05
+
+
+@pytest.mark.parametrize("law,re", [("DiFelice", 1.0), ("DiFelice", 100.0),
+                                    ("Beetstra", 1.0), ("Beetstra", 100.0)])
+def test_other_laws_against_their_closed_form(law, re):
+    r = run_bed(law, re)
+    eps = check_run(r, law, re)
+    expected = drag.pressure_gradient(law, eps, r["u_s"], RHO, MU, D)
+    err = r["grad"] / expected - 1
+    print(f"  {law} closed form {expected:.6g} Pa/m (Ergun "
+          f"{drag.ergun(eps, r['u_s'], RHO, MU, D):.6g}): error {err:+.2e}")
+    assert abs(err) < 0.01
