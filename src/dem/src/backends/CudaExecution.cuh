@@ -87,10 +87,11 @@ public:
         DEM_CUDA_CHECK_LAUNCH("forEachKernel");
     }
 
-    //- The pair pass (OmpExecution::forEachTouchingPair).
+    //- The pair pass over kernel.pairs (OmpExecution::forEachTouchingPair).
     template <class K>
-    static void forEachTouchingPair(long n, const K& kernel)
+    static void forEachTouchingPair(const K& kernel)
     {
+        const long n = kernel.pairs.count;
         if (n <= 0)
             return;
         forEachTouchingPairKernel<<<int((n + kBlock - 1) / kBlock), kBlock>>>(kernel, n);

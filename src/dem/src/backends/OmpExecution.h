@@ -43,7 +43,7 @@ struct OmpExecution
             f(i);
     }
 
-    //- The pair pass over the n pairs of kernel.pairs (a PairForceKernel): those for which
+    //- The pair pass over the pairs of kernel.pairs (a PairForceKernel): those for which
     //- kernel.mayTouch(p) holds are evaluated, the others get a cleared history and the zero
     //- record (contactSlot[p] = 0). Per thread, blocks of kBlockPairs pairs: the test
     //- vectorised; the pairs that may touch listed in order, with their grains and history
@@ -54,9 +54,10 @@ struct OmpExecution
     //- -ffp-contract=off), so neither the thread count nor the blocks change a bit.
     static constexpr int kBlockPairs = 512;
     template <class K>
-    static void forEachTouchingPair(long n, const K& kernel)
+    static void forEachTouchingPair(const K& kernel)
     {
         constexpr int kHistory = 3 * kHistoryVectors;
+        const long n = kernel.pairs.count;
 #pragma omp parallel if (n >= kParallelThreshold)
         {
             const K local = kernel; // members become loop invariants

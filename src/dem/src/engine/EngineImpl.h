@@ -271,9 +271,8 @@ private:
                         [&](auto law, auto)
                         {
                             using Kernel = PairForceKernel<decltype(shapes), decltype(law)>;
-                            const PairView view = pairs_.view();
-                            Exec::forEachTouchingPair(view.count,
-                                                      Kernel{grains_.view(), view, boxView(), law});
+                            Exec::forEachTouchingPair(
+                                Kernel{grains_.view(), pairs_.view(), boxView(), law});
                         });
             });
     }
