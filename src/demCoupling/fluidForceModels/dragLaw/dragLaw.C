@@ -83,10 +83,12 @@ Foam::fluidForceModels::dragLaw::dragCoefficient
         )
         {
             porosityReported_ = true;
-            Info<< "Drag law " << type() << ": porosity " << phi
-                << " in cell " << celli << " at t = " << mesh.time().value()
-                << " is outside the law's range [" << phiRange.first()
-                << ", " << phiRange.second()
+            Info<< "Drag law " << type() << ": porosity "
+                << inputChecks::shortForm(phi).c_str() << " in cell " << celli
+                << " at t = " << mesh.time().timeName()
+                << " is outside the law's range ["
+                << inputChecks::shortForm(phiRange.first()).c_str() << ", "
+                << inputChecks::shortForm(phiRange.second()).c_str()
                 << "] (doc/EQUATIONS.md section 11); reported once" << endl;
         }
         if
@@ -96,10 +98,12 @@ Foam::fluidForceModels::dragLaw::dragCoefficient
         )
         {
             reynoldsReported_ = true;
-            Info<< "Drag law " << type() << ": Reynolds number " << Re
-                << " in cell " << celli << " at t = " << mesh.time().value()
-                << " is outside the law's range [" << reRange.first()
-                << ", " << reRange.second()
+            Info<< "Drag law " << type() << ": Reynolds number "
+                << inputChecks::shortForm(Re).c_str() << " in cell " << celli
+                << " at t = " << mesh.time().timeName()
+                << " is outside the law's range ["
+                << inputChecks::shortForm(reRange.first()).c_str() << ", "
+                << inputChecks::shortForm(reRange.second()).c_str()
                 << "] (doc/EQUATIONS.md section 11); reported once" << endl;
         }
     }
