@@ -1,9 +1,10 @@
-"""The command line a new user tries (issue 24 item 3): both solvers' -help
+"""The command line a new user tries (issue 24 item 3): every solver's -help
 offers neither -parallel nor -dry-run (neither works: the grains live in one
 DEM system on the whole mesh, and OpenFOAM's dry run swaps the mesh for a
 one-dimensional column); given anyway, or started by mpirun with more than
 one process, the solver stops at once saying that MPI runs are not supported
-yet and what to do instead. Real binaries on tests/cases/grainColumn."""
+yet and what to do instead. Real binaries on tests/cases/grainColumn
+(nsDemFoam: tests/cases/fixedBed)."""
 
 import os
 import subprocess
@@ -12,19 +13,29 @@ import pytest
 
 from darcydem.case import Case, fatal_message
 
-SOLVERS = ("darcyDemFoam", "demFoam")
+SOLVERS = ("darcyDemFoam", "demFoam", "nsDemFoam")
+TEMPLATES = {"darcyDemFoam": "grainColumn", "demFoam": "grainColumn", "nsDemFoam": "fixedBed"}
 
 # The launcher variables solverOptions reads (Open MPI, MPICH/Intel MPI, MVAPICH)
 MPI_SIZE_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MV2_COMM_WORLD_SIZE")
 
 
 @pytest.fixture(scope="module")
-def case():
-    """A valid case: runs with endTime = startTime (read and checked, no step)."""
-    c = Case("grainColumn", "solver_options")
-    c.set("system/controlDict", "endTime", 0)
-    c.run("blockMesh")
-    return c
+def cases():
+    """A valid case per template: runs with endTime = startTime (read and
+    checked, no step)."""
+    made = {}
+    for template in sorted(set(TEMPLATES.values())):
+        c = Case(template, f"solver_options_{template}")
+        c.set("system/controlDict", "endTime", 0)
+        c.run("blockMesh")
+        made[template] = c
+    return made
+
+
+@pytest.fixture
+def case(cases, solver):
+    return cases[TEMPLATES[solver]]
 
 
 def call(args, env_extra=None):

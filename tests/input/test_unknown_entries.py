@@ -19,6 +19,7 @@ from darcydem.case import PROJECT, TEST_RUNS, Case, apply_backend, fatal_message
 DEM = "constant/demProperties"
 DARCY = "constant/darcyProperties"
 CTL = "system/controlDict"
+NS = "constant/nsDemProperties"
 
 # Every bond mechanism on, so that each mechanism's dictionary is read
 BONDS = ("{ youngsModulus 9e6; temperature -10;"
@@ -85,6 +86,11 @@ MISTYPED = {
                                   "porosity", "0.4", None),
     "solidPhase-uniformPorosity": ("darcyColumn", "darcyDemFoam", WITH_UNIFORM, DARCY,
                                    "solidPhase", "porsity", "0.4", "porosity"),
+    "nsDemProperties": ("fixedBed", "nsDemFoam", [], NS, "", "Mu", "1e-3", "mu"),
+    "nsDemProperties-grains": ("fixedBed", "nsDemFoam", [], NS, "grains", "porosityMx", "0.9",
+                               "porosityMax"),
+    "nsDemProperties-fluidForce": ("fixedBed", "nsDemFoam", [], NS, "grains/fluidForce",
+                                   "diametr", "1e-3", "diameter"),
     "functions-grainDiagnostics": ("grainColumn", "demFoam", [], CTL,
                                    "functions/grainDiagnostics", "writeIntervl", "10",
                                    "writeInterval"),
@@ -160,6 +166,8 @@ CASES = [
     ("tests/cases/grainColumn", "darcyDemFoam"),
     ("tests/cases/grainColumn", "demFoam"),
     ("tests/cases/wallBox", "demFoam"),
+    ("tests/cases/fixedBed", "nsDemFoam"),
+    ("tests/cases/settlingSphere", "nsDemFoam"),
 ]
 
 
