@@ -31,11 +31,11 @@ Re (the Stokes-regime estimate 2.5 % below the 3 %, and smaller at higher
 Re), the box 10 cells = 300 d across (a periodic array's hindrance,
 Hasimoto 1959, 1 - 1.76 c^(1/3), is 0.3 % at that period). The solver has no
 correction of this self-induced velocity; with one, coarser cells would do.
-test_error_falls_with_the_cell_size prints h = 5 d and 10 d at Re 0.1, and
-test_terminal_velocity_with_cells_of_two_diameters h = 2 d (the issue's
-question): there the sphere fills 6.5 % of its cell, so the porosity factor
-eps^-1.65 of the Wen-Yu law adds drag (up to +12 % at eps 0.935) against the
-self-induced slip: +24 % at Re 0.1, -2.4 % at Re 100.
+test_error_falls_with_the_cell_size prints h = 5 d and 10 d at Re 0.1; the
+tutorial tutorials/nsDemFoam/settlingSphere runs the whole series, h = 2 d
+(the issue's question) included: there the sphere fills 6.5 % of its cell
+(+29 % at Re 0.1, +0.6 % at Re 100, measured with the solver of this
+commit).
 
 Tolerance 3 % (the issue's) on the mean over the last stretch; the stretch
 before it must agree within 1 % (terminal velocity reached: the slow part
@@ -163,11 +163,3 @@ def test_error_falls_with_the_cell_size():
     print(f"  Re 0.1: error {errors[0]:+.2%} at h = 5 d, {errors[1]:+.2%} at h = 10 d, "
           f"ratio {errors[0] / errors[1]:.2f} (first order in d/h: 2)")
     assert errors[0] > errors[1] > 0
-
-
-@pytest.mark.parametrize("re", [0.1, 100.0])
-def test_terminal_velocity_with_cells_of_two_diameters(re):
-    """Printed for the issue's note, not asserted: cells of 2 d (the box
-    kept 50 d across)."""
-    r = settle(re, h_over_d=2, n_lat=25, steps_per_cell=20)
-    print(f"  h = 2 d: error {r['err']:+.2%} against Schiller-Naumann")
