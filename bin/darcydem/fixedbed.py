@@ -38,6 +38,8 @@ import argparse
 import json
 import math
 import os
+import shutil
+import subprocess
 import time
 
 import numpy as np
@@ -109,6 +111,28 @@ def fitted_gradient(case, time_name):
     slope, intercept = np.polyfit(z, p[FITTED], 1)
     residual = np.max(np.abs(p[FITTED] - (slope * z + intercept))) / abs(slope * H_CELL)
     return -slope, p, eps, residual
+
+
+def solver_version():
+    """Which nsDemFoam made the numbers: the git commit of the project, the
+    solver sources changed since it (the binary is built from the working
+    tree), and the binary's modification time."""
+    project = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+    def git(*args):
+        try:
+            return subprocess.run(["git", "-C", project, *args], capture_output=True,
+                                  text=True, check=True).stdout.strip()
+        except (OSError, subprocess.CalledProcessError):
+            return ""
+    binary = shutil.which("nsDemFoam")
+    return {"commit": git("rev-parse", "HEAD"),
+            "uncommittedSources": git("status", "--porcelain", "--", "src",
+                                      "applications").splitlines(),
+            "binary": binary,
+            "binaryModified": time.strftime("%Y-%m-%d %H:%M:%S UTC",
+                                            time.gmtime(os.path.getmtime(binary)))
+            if binary else None}
 
 
 class Study:
@@ -200,6 +224,7 @@ class Study:
                       "fittedLayers": [int(FITTED[0]), int(FITTED[-1])],
                       "rho": RHO, "mu": MU, "deltaT": DT,
                       "steadyCriterion": STEADY},
+            "solver": solver_version(),
             "runs": self.runs,
             "profile": self.profile,
             "wall_s": time.monotonic() - start}
