@@ -95,7 +95,10 @@ Foam::grainCoupling::grainCoupling
     (
         coupled_ ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
     ),
-    topPressure_(kind == fluidKind::darcy ? dict.get<scalar>("topPressure") : 0),
+    topPressure_
+    (
+        kind == fluidKind::darcy ? dict.get<scalar>("topPressure") : 0
+    ),
     rateForm_
     (
         coupled_
@@ -227,7 +230,13 @@ void Foam::grainCoupling::setFluid
 )
 {
     stepTimers::scope timed(timers_, stepTimers::exchange);
-    cloud_.setFluidForce(forceDensity, dragCoefficient, fluidVelocity, rhoFluid);
+    cloud_.setFluidForce
+    (
+        forceDensity,
+        dragCoefficient,
+        fluidVelocity,
+        rhoFluid
+    );
 }
 
 
