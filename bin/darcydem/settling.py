@@ -11,8 +11,9 @@ Two series:
     (drag.viscosity_for_settling_reynolds);
   - cell size: Re = 1, h/d = 2, 5, 10 and 20, the box kept 60 d across
     (30, 12, 6 and 3 cells; at 120 d, 60 x 60 cells across at h = 2 d,
-    that run alone would take about 25 minutes on 2 cores). The Re = 1, h = 20 d run of both series differs only
-    in the box: what halving it costs.
+    that run alone would take about 25 minutes on 2 cores). The Re = 1,
+    h = 20 d runs of the two series differ only in the box: what halving
+    it costs.
 
 Measured: the sphere's centre z at the write times (<time>/grains, four
 writes per cell crossed); the times at which it crosses the cell-centre
@@ -194,11 +195,12 @@ class Study:
         return self.results
 
     def table(self):
-        lines = ["run            Re     h/d  cells        mu [Pa s]   v [m/s]     v_SN [m/s]  v/v_SN   "
-                 "v/v_Stokes  v_Stokes/v_SN  drift      wall [s]"]
+        lines = ["run            Re     h/d  cells        mu [Pa s]   v [m/s]     "
+                 "v_SN [m/s]  v/v_SN   v/v_Stokes  v_Stokes/v_SN  drift      wall [s]"]
         for r in self.runs.values():
             m = r["mesh"]
-            lines.append(f"{r['case'].split('/')[-1]:<14} {r['Re']:<6g} {r['h_over_d']:<4g} {m[0]}x{m[1]}x{m[2]:<6} "
+            lines.append(f"{r['case'].split('/')[-1]:<14} {r['Re']:<6g} {r['h_over_d']:<4g} "
+                         f"{m[0]}x{m[1]}x{m[2]:<6} "
                          f"{r['mu']:<11.5g} {r['v']:<11.5g} {r['schillerNaumann']:<11.5g} "
                          f"{r['overSchillerNaumann']:.4f}   {r['overStokes']:.4f}      "
                          f"{r['stokesOverSchillerNaumann']:.4f}         {r['drift']:+.1e}   "
