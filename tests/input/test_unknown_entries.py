@@ -161,6 +161,8 @@ CASES = [
     ("tutorials/darcyDemFoam/drainedColumn", "darcyDemFoam"),
     ("tutorials/demFoam/capsulePile", "demFoam"),
     ("tutorials/demFoam/snowSettlement", "demFoam"),
+    ("tutorials/nsDemFoam/fixedBed", "nsDemFoam"),
+    ("tutorials/nsDemFoam/settlingSphere", "nsDemFoam"),
     ("tests/cases/darcyColumn", "darcyDemFoam"),
     ("tests/cases/closedBox", "darcyDemFoam"),
     ("tests/cases/grainColumn", "darcyDemFoam"),
