@@ -163,6 +163,8 @@ CASES = [
     ("tutorials/demFoam/snowSettlement", "demFoam"),
     ("tutorials/nsDemFoam/fixedBed", "nsDemFoam"),
     ("tutorials/nsDemFoam/settlingSphere", "nsDemFoam"),
+    ("tutorials/nsDemFoam/darcyAndNavierStokes", "nsDemFoam"),
+    ("tutorials/nsDemFoam/darcyAndNavierStokes", "darcyDemFoam"),
     ("tests/cases/darcyColumn", "darcyDemFoam"),
     ("tests/cases/closedBox", "darcyDemFoam"),
     ("tests/cases/grainColumn", "darcyDemFoam"),
