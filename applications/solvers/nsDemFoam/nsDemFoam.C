@@ -40,6 +40,7 @@ Description
 #include "stepTimers.H"
 #include "solverOptions.H"
 #include "zeroGradientFvPatchFields.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
