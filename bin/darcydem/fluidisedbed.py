@@ -33,6 +33,7 @@ import numpy as np
 
 from darcydem import drag
 from darcydem.case import Case, PROJECT
+from darcydem.cli import say
 from darcydem.foamfiles import read_vtp
 
 D, RHO_P, RHO, MU, G = 1e-3, 2500.0, 1000.0, 1e-3, 9.81
@@ -46,11 +47,9 @@ AVERAGE = 0.4
 VELOCITIES = (0.002, 0.004, 0.006, 0.008, 0.010, 0.012, 0.015, 0.018, 0.027, 0.036, 0.045)
 
 
-def say(*args):
-    print(*args, flush=True)
-
-
 def solve(f, lo, hi):
+    """The root of f between lo and hi (f(lo), f(hi) of opposite sign), by
+    bisection to round-off."""
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if f(lo) * f(mid) <= 0.0:

@@ -86,6 +86,26 @@ def relaxation_time(re, mu):
     return RHO_P * D * D / (18 * mu * (1 + 0.15 * re**0.687))
 
 
+
+def measure_fall(case, z0, h, fall, n_meas, name):
+    """The sphere's fall from z0 in a finished run: its z at the write
+    times (<time>/grains), the times it crosses the cell-centre planes
+    z0 - k h, k = 0..fall (z interpolated linearly between writes), the
+    terminal velocity over the last n_meas cells and over the n_meas before
+    them, and the velocity over each cell crossed. Returns (v_last,
+    v_before, per_cell, crossing, t)."""
+    t = np.array([0.0] + [tt for tt, _ in case.times()])
+    z = np.array([z0] + [read_grains(case.file(os.path.join(n, "grains")))["position"][0, 2]
+                         for _, n in case.times()])
+    planes = z0 - h * np.arange(fall + 1)
+    if z[-1] > planes[-1]:
+        raise RuntimeError(f"{name}: the sphere fell only to z = {z[-1]:.4g} m, not to "
+                           f"{planes[-1]:.4g} m ({fall} cells) by t = {t[-1]:.3g} s")
+    crossing = np.interp(-planes, -z, t)
+    v_last = n_meas * h / (crossing[fall] - crossing[fall - n_meas])
+    v_before = n_meas * h / (crossing[fall - n_meas] - crossing[fall - 2 * n_meas])
+    return v_last, v_before, h / np.diff(crossing), crossing, t
+
 class Study:
     def __init__(self, study_dir, reynolds=REYNOLDS, sizes=SIZES, log=say):
         self.clock = StageClock("settlingSphereStudy", log, relay_interval=30.0)
@@ -142,18 +162,7 @@ class Study:
             f"Re {re:g}, h = {h_over_d:g} d, {n_lat}x{n_lat}x{nz} cells, mu {mu:.4g} Pa s, "
             f"{steps} steps of {dt:.3g} s x {sub} DEM steps", end)
 
-        times = c.times()
-        t = np.array([0.0] + [tt for tt, _ in times])
-        z = np.array([z0] + [read_grains(c.file(os.path.join(n, "grains")))["position"][0, 2]
-                             for _, n in times])
-        planes = z0 - h * np.arange(fall + 1)
-        if z[-1] > planes[-1]:
-            raise RuntimeError(f"{key}: the sphere fell only to z = {z[-1]:.4g} m, not to "
-                               f"{planes[-1]:.4g} m ({fall} cells) by t = {t[-1]:.3g} s")
-        crossing = np.interp(-planes, -z, t)
-        v_last = n_meas * h / (crossing[fall] - crossing[fall - n_meas])
-        v_before = n_meas * h / (crossing[fall - n_meas] - crossing[fall - 2 * n_meas])
-        per_cell = h / np.diff(crossing)
+        v_last, v_before, per_cell, crossing, _ = measure_fall(c, z0, h, fall, n_meas, key)
         r = {"Re": re, "h_over_d": h_over_d, "mu": mu, "tau": tau,
              "mesh": [n_lat, n_lat, nz], "box": n_lat * h, "cell": h,
              "deltaT": dt, "demSubsteps": sub, "steps": steps, "endTime": end,

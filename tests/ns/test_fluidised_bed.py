@@ -75,6 +75,7 @@ import numpy as np
 
 from darcydem import drag
 from darcydem.case import Case, PROJECT
+from darcydem.fluidisedbed import inflow_table, solve
 from darcydem.foamfiles import read_vtp
 
 D, RHO_P, RHO, MU, G = 1e-3, 2500.0, 1000.0, 1e-3, 9.81
@@ -87,15 +88,6 @@ SETTLE = 0.8                 # s of settling in still water
 STAGE = 1.0                  # s per inflow velocity
 AVERAGE = 0.4                # s averaged at the end of each stage
 VELOCITIES = (0.004, 0.018, 0.036)   # superficial inflow [m/s]
-
-
-def inflow_table():
-    rows = [(0.0, 0.0), (SETTLE, 0.0)]
-    for k, u in enumerate(VELOCITIES):
-        start = SETTLE + k * STAGE
-        rows += [(start + 1e-3, u), (start + STAGE, u)]
-    rows.append((100.0, VELOCITIES[-1]))
-    return "table (%s)" % " ".join("(%r (0 0 %r))" % r for r in rows)
 
 
 def stage_means(case):
@@ -137,16 +129,6 @@ def interior(r):
     return grad, r["eps"][k[0]:k[-1] + 1].mean(), k
 
 
-def solve(f, lo, hi):
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if f(lo) * f(mid) <= 0.0:
-            hi = mid
-        else:
-            lo = mid
-    return 0.5 * (lo + hi)
-
-
 def run_bed():
     c = Case("fluidisedBed", "fluidisedBed")
     subprocess.run([f"{PROJECT}/bin/makeGrains", "--box", str(L), str(L),
@@ -155,7 +137,7 @@ def run_bed():
                     "--seed", "1", "-o", c.file("0/grains")],
                    check=True, stdout=subprocess.DEVNULL)
     text = open(c.file("0/U")).read()
-    text = re.sub(r"table \(\(0 \(0 0 0\)\) \(100 \(0 0 0\)\)\)", inflow_table(), text)
+    text = re.sub(r"table \(\(0 \(0 0 0\)\) \(100 \(0 0 0\)\)\)", inflow_table(VELOCITIES, STAGE), text)
     open(c.file("0/U"), "w").write(text)
     c.set("system/controlDict", "endTime", SETTLE + len(VELOCITIES) * STAGE)
     c.run("blockMesh")

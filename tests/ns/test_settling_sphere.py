@@ -49,12 +49,11 @@ velocity is 2.99 % below Stokes: that check has no room of its own).
 import math
 import time
 
-import numpy as np
 import pytest
 
 from darcydem import drag
 from darcydem.case import Case
-from darcydem.foamfiles import read_grains
+from darcydem.settling import measure_fall
 
 D = 1e-3
 RHO_P, RHO_F, G = 2000.0, 1000.0, 9.81
@@ -113,18 +112,8 @@ def settle(re, h_over_d=H_OVER_D, n_lat=N_LAT, steps_per_cell=STEPS_PER_CELL,
     c.run("nsDemFoam")
     wall = time.time() - start
 
-    t = np.array([0.0] + [tt for tt, _ in c.times()])
-    z = np.array([z0] + [read_grains(c.file(f"{name_}/grains"))["position"][0, 2]
-                         for _, name_ in c.times()])
     # z falls monotonically; crossing times of cell-centre planes
-    planes = z0 - h * np.arange(fall + 1)
-    if z[-1] > planes[-1]:
-        raise AssertionError(f"the sphere fell only to z = {z[-1]:.4g} m, not to "
-                             f"{planes[-1]:.4g} m ({fall} cells) by t = {t[-1]:.3g} s")
-    crossing = np.interp(-planes, -z, t)
-    v_last = n_meas * h / (crossing[fall] - crossing[fall - n_meas])
-    v_before = n_meas * h / (crossing[fall - n_meas] - crossing[fall - 2 * n_meas])
-    per_cell = h / np.diff(crossing)
+    v_last, v_before, per_cell, _, _ = measure_fall(c, z0, h, fall, n_meas, c.path)
     out = dict(re=re, mu=mu, w_sn=w_sn, v=v_last, v_before=v_before,
                err=v_last / w_sn - 1, wall=wall, cells=n_lat * n_lat * nz,
                steps=steps, sub=sub, h_over_d=h_over_d, per_cell=per_cell,

@@ -147,6 +147,24 @@ Foam::label Foam::demCloud::subStepsPerFluidStep(const scalar dtFluid) const
 }
 
 
+Foam::scalar Foam::demCloud::midStepTime(const scalar dtFluid) const
+{
+    // The end time as its name reads: the value a restart starts from,
+    // where the running sum of time steps differs in the last bits, so
+    // time-dependent loads restart bit-identically
+    const Time& runTime = mesh_.time();
+    scalar t = runTime.value();
+    readScalar(runTime.timeName(), t);
+    return t - 0.5*dtFluid;
+}
+
+
+Foam::vector Foam::demCloud::gravity(const scalar dtFluid) const
+{
+    return settings_.walls().gravity(midStepTime(dtFluid));
+}
+
+
 Foam::label Foam::demCloud::evolve(const scalar dtFluid)
 {
     const label nSub = subStepsPerFluidStep(dtFluid);
@@ -159,13 +177,8 @@ Foam::label Foam::demCloud::evolve(const scalar dtFluid)
         [&]
         {
             // Wall stresses and gravity held for the fluid step, at its
-            // middle. The end time as its name reads: the value a restart
-            // starts from, where the running sum of time steps differs in
-            // the last bits, so time-dependent loads restart bit-identically
-            const Time& runTime = mesh_.time();
-            scalar t = runTime.value();
-            readScalar(runTime.timeName(), t);
-            settings_.walls().update(*system_, t - 0.5*dtFluid);
+            // middle
+            settings_.walls().update(*system_, midStepTime(dtFluid));
             system_->step(nSub);
         }
     );

@@ -49,7 +49,7 @@ void Foam::grainCoupling::deposit()
     );
 
     // The pressure equation's clamp; a dry run writes the deposit as it is
-    if (coupled_)
+    if (coupled())
     {
         const dimensionedScalar lo("porosityMin", dimless, porosityMin_);
         const dimensionedScalar hi("porosityMax", dimless, porosityMax_);
@@ -73,11 +73,10 @@ Foam::grainCoupling::grainCoupling
 :
     mesh_(mesh),
     kind_(kind),
-    coupled_(kind != fluidKind::dry),
     cloud_(mesh),
     fluidForce_
     (
-        coupled_
+        coupled()
       ? fluidForceModel::New
         (
             kind == fluidKind::momentum
@@ -89,11 +88,11 @@ Foam::grainCoupling::grainCoupling
     ),
     porosityMin_
     (
-        coupled_ ? inputChecks::getInOpenRange(dict, "porosityMin", 0, 1) : 0
+        coupled() ? inputChecks::getInOpenRange(dict, "porosityMin", 0, 1) : 0
     ),
     porosityMax_
     (
-        coupled_ ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
+        coupled() ? inputChecks::getInOpenRange(dict, "porosityMax", 0, 1) : 1
     ),
     topPressure_
     (
@@ -101,7 +100,7 @@ Foam::grainCoupling::grainCoupling
     ),
     rateForm_
     (
-        coupled_
+        coupled()
       ? porosityRateFormNames.getOrDefault
         (
             "porosityRate",
@@ -143,9 +142,17 @@ Foam::grainCoupling::grainCoupling
         dimensionedScalar(dimDensity/dimTime, Zero),
         zeroGradientFvPatchScalarField::typeName
     ),
+    dragDiameter_(0),
     timers_(stepTimers::New(mesh))
 {
-    if (coupled_)
+    if (kind_ == fluidKind::momentum)
+    {
+        dragDiameter_ =
+            refCast<const fluidForceModels::dragLaw>(fluidForce_())
+           .diameter(cloud_.meanDiameter());
+    }
+
+    if (coupled())
     {
         if (porosityMin_ >= porosityMax_)
         {
@@ -171,7 +178,7 @@ void Foam::grainCoupling::advance()
 {
     const Time& runTime = mesh_.time();
 
-    if (!coupled_)
+    if (!coupled())
     {
         stepGrains();
         // Nothing reads the fields between writes
@@ -221,25 +228,6 @@ void Foam::grainCoupling::setPressureGradient
 }
 
 
-void Foam::grainCoupling::setFluid
-(
-    const volVectorField& forceDensity,
-    const volScalarField& dragCoefficient,
-    const volVectorField& fluidVelocity,
-    const scalar rhoFluid
-)
-{
-    stepTimers::scope timed(timers_, stepTimers::exchange);
-    cloud_.setFluidForce
-    (
-        forceDensity,
-        dragCoefficient,
-        fluidVelocity,
-        rhoFluid
-    );
-}
-
-
 void Foam::grainCoupling::setFlow
 (
     const volVectorField& gradp,
@@ -258,7 +246,7 @@ void Foam::grainCoupling::setFlow
         porosityMax_,
         rhoFluid,
         muFluid,
-        law.diameter(cloud_.meanDiameter())
+        dragDiameter_
     );
     cloud_.setFluidForce
     (
@@ -272,11 +260,7 @@ void Foam::grainCoupling::setFlow
 
 Foam::vector Foam::grainCoupling::gravity() const
 {
-    const Time& runTime = mesh_.time();
-    return cloud_.walls().gravity
-    (
-        runTime.value() - 0.5*runTime.deltaTValue()
-    );
+    return cloud_.gravity(mesh_.time().deltaTValue());
 }
 
 
@@ -306,7 +290,7 @@ void Foam::grainCoupling::fixedPressureCells
 {
     cells.clear();
     value = topPressure_;
-    if (!coupled_ || !cloud_.hasTopWall())
+    if (!coupled() || !cloud_.hasTopWall())
     {
         return;
     }

@@ -14,13 +14,20 @@ const Foam::wordList Foam::fluidForceModels::dragLaw::entryNames({"diameter"});
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fluidForceModels::dragLaw::dragLaw(const dictionary& dict)
+Foam::fluidForceModels::dragLaw::dragLaw
+(
+    const dictionary& dict,
+    const Pair<scalar>& porosityRange,
+    const Pair<scalar>& reynoldsRange
+)
 :
     fluidForceModel(dict, entryNames),
     diameter_
     (
         dict.found("diameter") ? inputChecks::getPositive(dict, "diameter") : 0
     ),
+    porosityRange_(porosityRange),
+    reynoldsRange_(reynoldsRange),
     porosityReported_(false),
     reynoldsReported_(false)
 {}
@@ -62,8 +69,8 @@ Foam::fluidForceModels::dragLaw::dragCoefficient
         )
     );
     scalarField& beta = tBeta.ref().primitiveFieldRef();
-    const Pair<scalar> phiRange = porosityRange();
-    const Pair<scalar> reRange = reynoldsRange();
+    const Pair<scalar>& phiRange = porosityRange_;
+    const Pair<scalar>& reRange = reynoldsRange_;
 
     forAll(beta, celli)
     {
