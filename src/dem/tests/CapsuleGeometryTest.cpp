@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -267,6 +269,54 @@ TEST(CapsuleGeometry, CapsulePairContactPoints)
     EXPECT_NEAR((g.offsetJ - Vector3d(0, 0, -h - 0.95 * r)).norm(), 0.0, 1e-15);
     // Apart: not touching.
     EXPECT_FALSE(capsulePairGeometry(Vector3d(2.01 * r, 0, 0), a, a, r, r).touching);
+}
+
+//- Contact point of two side-by-side capsules as j tilts through parallel (issue 30: the
+//- closest point jumped from the middle of the shared stretch to its end at a tilt of 1e-14,
+//- and the torque with it). i along z at the origin, j's centre 1.8 r away in x (overlap 0.2 r
+//- when parallel), j's axis (sin t, 0, cos t). Closed form of the touching stretch of i's
+//- axis, z in [-h, h]: the distance from (0, 0, z) to j's line is |z sin t + 1.8 r cos t|
+//- (touching below 2 r), and j's nearest point lies on its core for -h <= z cos t - 1.8 r
+//- sin t <= h; the contact sits at the stretch's middle, so it stays at z = 0 until the tilt
+//- lifts j's top clear (sin t = 0.2 r / h = 0.1), then moves continuously towards the end
+//- still pressed.
+TEST(CapsuleGeometry, ContactPointMovesContinuouslyThroughParallel)
+{
+    const double r = 0.01, h = 0.02;
+    const Vector3d ai(0, 0, h), d(1.8 * r, 0, 0);
+    double previousZ = 0.0, previousT = 0.0;
+    bool first = true;
+    for (const double t : {-0.3, -0.15, -0.1, -1e-3, -1e-6, -1e-9, -1e-12, -1e-14, 0.0, 1e-14,
+                           1e-12, 1e-9, 1e-6, 1e-3, 0.05, 0.1, 0.12, 0.15, 0.3})
+    {
+        const double s = std::sin(t), c = std::cos(t);
+        const auto g = capsulePairGeometry(d, ai, h * Vector3d(s, 0, c), r, r);
+        ASSERT_TRUE(g.touching) << t;
+        // The stretch where |z s + 1.8 r c| < 2 r, within both cores' reach.
+        double from = std::max(-h, (-h + 1.8 * r * s) / c);
+        double to = std::min(h, (h + 1.8 * r * s) / c);
+        if (s > 0)
+            to = std::min(to, (2 * r - 1.8 * r * c) / s);
+        if (s < 0)
+            from = std::max(from, (2 * r - 1.8 * r * c) / s);
+        const double expected = 0.5 * (from + to);
+        // The point sits (r - overlap/2) off i's axis along the normal; its z is the axis
+        // point's plus that offset's z (the normal tilts with j by less than t).
+        const double axisZ = g.offsetI.z() - (r - 0.5 * g.overlap) * g.normal.z();
+        std::printf("  tilt %+.0e rad: contact z / h %+.15f (closed form %+.15f), "
+                    "torque_y %+.6e\n",
+                    t, axisZ / h, expected / h, g.offsetI.cross(g.normal).y());
+        EXPECT_NEAR(axisZ, expected, kTolerance * h) << t;
+        // Continuity: the closed form's slope is at most 5 h per rad here (0.05 h / sin^2 t
+        // past the lift-off at sin t = 0.1, 0.45 h before it); 100 h per rad between
+        // neighbouring tilts catches any jump (the closest point jumped by h over 1e-9 rad).
+        if (!first)
+            EXPECT_LE(std::fabs(axisZ - previousZ), 100 * h * std::fabs(t - previousT) + kTolerance)
+                << t;
+        first = false;
+        previousZ = axisZ;
+        previousT = t;
+    }
 }
 
 TEST(CapsuleGeometry, PlaneContacts)

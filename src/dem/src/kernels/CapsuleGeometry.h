@@ -68,10 +68,73 @@ DEM_HD void closestSegmentParameters(const Vector3d& ai, const Vector3d& aj, con
     uj = bb > 0.0 ? uj : 0.0;
 }
 
+//- Parameter on i's core of the middle of the stretch along which the two cores come closer
+//- than sumRadii, for two capsules (aa, bb > 0); uClosest (the closest point's parameter) where
+//- there is no such stretch along j's line (an end of j's core is what touches) or for a
+//- sphere. Why: the closest point of two nearly parallel cores jumps from the middle of their
+//- shared stretch (exactly parallel) to its end at the slightest tilt (sin 1e-14), and the
+//- contact's torque with it; the middle of the touching stretch stays the middle until the
+//- tilt lifts one end clear ((r_i + r_j - distance) / core length), then moves continuously
+//- towards the end still pressed, and for crossing cores is the closest point itself (the
+//- stretch is symmetric about it). Along i's core the squared distance to j's line is
+//- quadratic, D^2(ref + x) = s2 x^2 + 2 g x + c0 about ref, the middle of the stretch where
+//- j's nearest line point lies on j's core; s2 and g from cross products (w = ai x aj), so
+//- that nearly parallel cores lose no digits (the lines' own closest point, ~1/sin away, is
+//- never formed). The stretch is [ref + roots] within that common stretch and within i's core.
+//- No division by zero and no infinity: +-2 stands for an unbounded end (everything is then
+//- clipped to [-1, 1]).
+DEM_HD double touchingStretchMiddle(const Vector3d& ai, const Vector3d& aj, const Vector3d& d,
+                                    double sumRadii, double uClosest)
+{
+    const double aa = ai.squaredNorm(), bb = aj.squaredNorm(), ab = ai.dot(aj);
+    const double bd = aj.dot(d);
+    const bool capsules = aa > 0.0 && bb > 0.0;
+    const double inverseB = bb > 0.0 ? 1.0 / (bb > 0.0 ? bb : 1.0) : 0.0;
+    // j's nearest line point to x_i + u ai is uj = (ab u - bd) / bb: on j's core for u between
+    // (bd - bb) / ab and (bd + bb) / ab; for perpendicular cores (ab = 0) everywhere or nowhere.
+    const bool tilted = ab != 0.0;
+    const double inverseAb = 1.0 / (tilted ? ab : 1.0);
+    const double e1 = (bd - bb) * inverseAb, e2 = (bd + bb) * inverseAb;
+    const bool reaches = std::fabs(bd) <= bb;
+    const double lowJ = tilted ? (e1 < e2 ? e1 : e2) : (reaches ? -2.0 : 2.0);
+    const double highJ = tilted ? (e1 < e2 ? e2 : e1) : (reaches ? 2.0 : -2.0);
+    const double lower = lowJ > -1.0 ? lowJ : -1.0, upper = highJ < 1.0 ? highJ : 1.0;
+    const double ref = lower <= upper ? 0.5 * (lower + upper) : 0.0;
+    // D^2(u) = |p|^2 - (aj . p)^2 / bb with p = u ai - d; about ref: c0, the slope g = dD^2/du
+    // / 2 = (w . (p x aj)) / bb and the curvature s2 = |w|^2 / bb.
+    const Vector3d w = ai.cross(aj);
+    const Vector3d p = ref * ai - d;
+    const double pj = aj.dot(p);
+    const double c0 = p.squaredNorm() - pj * pj * inverseB - sumRadii * sumRadii;
+    const double g = w.dot(p.cross(aj)) * inverseB;
+    const double s2 = w.squaredNorm() * inverseB;
+    // Roots of s2 x^2 + 2 g x + c0 = 0 without cancellation: q = -(g + sign(g) sqrt(g^2 - s2
+    // c0)), x = q / s2 and c0 / q. s2 = 0 (parallel): the linear root c0 / q and an unbounded
+    // end on the side where D^2 falls; s2 = g = 0: all of the line or none.
+    const double discriminant = g * g - s2 * c0;
+    const double root = std::sqrt(discriminant > 0.0 ? discriminant : 0.0);
+    const double q = -(g + (g < 0.0 ? -root : root));
+    const bool quadratic = s2 > 0.0, linear = !quadratic && g != 0.0;
+    // q / s2 and c0 / q with one division (s2 q cannot underflow: both are products of a few
+    // lengths and sines, far above 1e-300)
+    const double safeS2 = quadratic ? s2 : 1.0, safeQ = q != 0.0 ? q : 1.0;
+    const double inverse = 1.0 / (safeS2 * safeQ);
+    const double xA = quadratic ? q * safeQ * inverse : (q < 0.0 ? -2.0 : 2.0);
+    const double xB = c0 * safeS2 * inverse;
+    const bool some = quadratic ? (discriminant > 0.0 && q != 0.0) : (linear || c0 < 0.0);
+    const bool roots = quadratic || linear;
+    const double low = roots ? ref + (xA < xB ? xA : xB) : -2.0;
+    const double high = roots ? ref + (xA < xB ? xB : xA) : 2.0;
+    const double from = low > lower ? low : lower, to = high < upper ? high : upper;
+    return capsules && some && from < to ? 0.5 * (from + to) : uClosest;
+}
+
 //- Two grains' contact geometry. normal: unit, from i towards j; overlap: r_i + r_j minus the
-//- cores' distance; offsetI, offsetJ: the contact point c - x_i and c - x_j, with c the middle
-//- of the overlap, (x_i + ui ai) + (r_i - overlap/2) normal. normal, overlap and the offsets
-//- are meaningful only when touching.
+//- cores' distance (normal and overlap from the cores' closest points); offsetI, offsetJ: the
+//- contact point c - x_i and c - x_j, c = (x_i + uc ai) + (r_i - overlap/2) normal with uc
+//- the middle of the stretch of i's core that touches j (touchingStretchMiddle: the closest
+//- point for crossing cores, the middle of the shared stretch for parallel ones, continuous
+//- in between). normal, overlap and the offsets are meaningful only when touching.
 struct CapsulePairGeometry
 {
     Vector3d normal, offsetI, offsetJ;
@@ -111,7 +174,8 @@ DEM_HD CapsulePairGeometry capsulePairGeometry(const Vector3d& d, const Vector3d
                                coincident ? 0.0 : separation.y() * inverse,
                                coincident ? 1.0 : separation.z() * inverse);
     geometry.overlap = sumRadii - distance;
-    geometry.offsetI = ui * ai + (ri - 0.5 * geometry.overlap) * geometry.normal;
+    const double uc = touchingStretchMiddle(ai, aj, d, sumRadii, ui);
+    geometry.offsetI = uc * ai + (ri - 0.5 * geometry.overlap) * geometry.normal;
     geometry.offsetJ = geometry.offsetI - d;
     return geometry;
 }
