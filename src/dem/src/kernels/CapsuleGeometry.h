@@ -39,21 +39,42 @@ DEM_HD double clampUnit(double u)
 //- stretch they share (the contact of two side-by-side capsules sits mid-way, not at an end),
 //- or the nearest ends when they share none. A core of zero length (a sphere) gets u = 0
 //- exactly.
-DEM_HD void closestSegmentParameters(const Vector3d& ai, const Vector3d& aj, const Vector3d& d,
+//- The dot and cross products of two cores' half-axis vectors ai, aj and their separation d
+//- that both the closest points and the touching stretch take: computed once per pair.
+struct CoreProducts
+{
+    double aa, bb, ab, ad, bd;
+    double inverseA, inverseB; // 1/aa, 1/bb; 0 for a core of zero length
+    Vector3d w;                // ai x aj
+};
+
+DEM_HD CoreProducts coreProducts(const Vector3d& ai, const Vector3d& aj, const Vector3d& d)
+{
+    CoreProducts k;
+    k.aa = ai.squaredNorm();
+    k.bb = aj.squaredNorm();
+    k.ab = ai.dot(aj);
+    k.ad = ai.dot(d);
+    k.bd = aj.dot(d);
+    k.inverseA = k.aa > 0.0 ? 1.0 / (k.aa > 0.0 ? k.aa : 1.0) : 0.0;
+    k.inverseB = k.bb > 0.0 ? 1.0 / (k.bb > 0.0 ? k.bb : 1.0) : 0.0;
+    k.w = ai.cross(aj);
+    return k;
+}
+
+DEM_HD void closestSegmentParameters(const Vector3d& aj, const Vector3d& d, const CoreProducts& k,
                                      double& ui, double& uj)
 {
-    const double aa = ai.squaredNorm(), bb = aj.squaredNorm(), ab = ai.dot(aj);
-    const double ad = ai.dot(d), bd = aj.dot(d);
+    const double aa = k.aa, bb = k.bb, ab = k.ab, ad = k.ad, bd = k.bd;
+    const double inverseA = k.inverseA, inverseB = k.inverseB;
     // Lines: ai.(ui ai - uj aj - d) = 0 and aj.(ui ai - uj aj - d) = 0 give
     // ui = (ad bb - ab bd) / (aa bb - ab^2) = (w . (d x aj)) / |w|^2, w = ai x aj: the cross
     // products avoid the cancellation of aa bb - ab^2 (relative error eps / sin^2) for nearly
     // parallel cores.
-    const Vector3d w = ai.cross(aj);
+    const Vector3d& w = k.w;
     const double denominator = w.squaredNorm();
     // Also true when either core has zero length (denominator and aa bb are both 0).
     const bool parallel = denominator <= kParallelSine2 * aa * bb;
-    const double inverseA = aa > 0.0 ? 1.0 / (aa > 0.0 ? aa : 1.0) : 0.0;
-    const double inverseB = bb > 0.0 ? 1.0 / (bb > 0.0 ? bb : 1.0) : 0.0;
     const double uSkew = w.dot(d.cross(aj)) / (parallel ? 1.0 : denominator);
     // Parallel: j's core covers ui in [(ad - |ab|)/aa, (ad + |ab|)/aa]; the middle of its
     // intersection with [-1, 1] (an empty one puts the middle beyond the nearest end).
@@ -66,6 +87,12 @@ DEM_HD void closestSegmentParameters(const Vector3d& ai, const Vector3d& aj, con
     // A zero-length core: (...) * 0 may be -0; make it +0 so that u a is +0 (see below).
     ui = aa > 0.0 ? ui : 0.0;
     uj = bb > 0.0 ? uj : 0.0;
+}
+
+DEM_HD void closestSegmentParameters(const Vector3d& ai, const Vector3d& aj, const Vector3d& d,
+                                     double& ui, double& uj)
+{
+    closestSegmentParameters(aj, d, coreProducts(ai, aj, d), ui, uj);
 }
 
 //- Parameter on i's core of the middle of the stretch along which the two cores come closer
@@ -84,12 +111,10 @@ DEM_HD void closestSegmentParameters(const Vector3d& ai, const Vector3d& aj, con
 //- No division by zero and no infinity: +-2 stands for an unbounded end (everything is then
 //- clipped to [-1, 1]).
 DEM_HD double touchingStretchMiddle(const Vector3d& ai, const Vector3d& aj, const Vector3d& d,
-                                    double sumRadii, double uClosest)
+                                    const CoreProducts& k, double sumRadii, double uClosest)
 {
-    const double aa = ai.squaredNorm(), bb = aj.squaredNorm(), ab = ai.dot(aj);
-    const double bd = aj.dot(d);
-    const bool capsules = aa > 0.0 && bb > 0.0;
-    const double inverseB = bb > 0.0 ? 1.0 / (bb > 0.0 ? bb : 1.0) : 0.0;
+    const double bb = k.bb, ab = k.ab, bd = k.bd, inverseB = k.inverseB;
+    const bool capsules = k.aa > 0.0 && bb > 0.0;
     // j's nearest line point to x_i + u ai is uj = (ab u - bd) / bb: on j's core for u between
     // (bd - bb) / ab and (bd + bb) / ab; for perpendicular cores (ab = 0) everywhere or nowhere.
     const bool tilted = ab != 0.0;
@@ -102,7 +127,7 @@ DEM_HD double touchingStretchMiddle(const Vector3d& ai, const Vector3d& aj, cons
     const double ref = lower <= upper ? 0.5 * (lower + upper) : 0.0;
     // D^2(u) = |p|^2 - (aj . p)^2 / bb with p = u ai - d; about ref: c0, the slope g = dD^2/du
     // / 2 = (w . (p x aj)) / bb and the curvature s2 = |w|^2 / bb.
-    const Vector3d w = ai.cross(aj);
+    const Vector3d& w = k.w;
     const Vector3d p = ref * ai - d;
     const double pj = aj.dot(p);
     const double c0 = p.squaredNorm() - pj * pj * inverseB - sumRadii * sumRadii;
@@ -155,8 +180,9 @@ constexpr double kCoincidentFraction2 = 1e-24;
 DEM_HD CapsulePairGeometry capsulePairGeometry(const Vector3d& d, const Vector3d& ai,
                                                const Vector3d& aj, double ri, double rj)
 {
+    const CoreProducts k = coreProducts(ai, aj, d);
     double ui, uj;
-    closestSegmentParameters(ai, aj, d, ui, uj);
+    closestSegmentParameters(aj, d, k, ui, uj);
     // From i's closest core point to j's. For spheres shift = (+0) - (+0) = +0 and d - 0 is d
     // exactly (also for signed zeros).
     const Vector3d shift = ui * ai - uj * aj;
@@ -174,7 +200,7 @@ DEM_HD CapsulePairGeometry capsulePairGeometry(const Vector3d& d, const Vector3d
                                coincident ? 0.0 : separation.y() * inverse,
                                coincident ? 1.0 : separation.z() * inverse);
     geometry.overlap = sumRadii - distance;
-    const double uc = touchingStretchMiddle(ai, aj, d, sumRadii, ui);
+    const double uc = touchingStretchMiddle(ai, aj, d, k, sumRadii, ui);
     geometry.offsetI = uc * ai + (ri - 0.5 * geometry.overlap) * geometry.normal;
     geometry.offsetJ = geometry.offsetI - d;
     return geometry;
