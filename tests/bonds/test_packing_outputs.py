@@ -194,6 +194,70 @@ def test_bonds_frozen_on_contact_written_for_paraview_and_counted(strength):
     assert packing["bondsIntact"][-1] > 0
 
 
+CREEP_COLUMNS = ["time", "bondsIntact", "normal", "shear", "twist", "bend",
+                 "meanNormal", "meanShear", "meanTwist", "meanBend"]
+MECHANISMS = {"normal": "creepNormal", "shear": "creepShear", "twist": "creepTwist",
+              "bend": "creepBend"}
+
+
+def test_bond_creep_per_mechanism_keeps_what_broken_bonds_crept():
+    """The bondCreep function object on the weak bonded column of the test
+    above with grain-boundary creep on shear and twist (tau = nu_s / (0.6
+    E) = 0.01 s, a tenth of the run) and bend creep off: bonds freeze,
+    creep and break as the column settles. Conservation: the sample's sums
+    never decrease (creep counts in magnitude, and a bond that breaks keeps
+    its creep in them), and they hold at least what the intact bonds crept;
+    the means at each write time are the means of the bonds' own creep in
+    their .vtp (round-off, 1e-12); a mechanism without creep law (normal:
+    no power law; bend: switched off) creeps exactly nothing."""
+    c = Case("grainColumn", "bond_creep_column")
+    c.set("system/controlDict", "endTime", 0.1)
+    c.set("system/controlDict", "deltaT", 1e-3)
+    c.set("system/controlDict", "writeInterval", 20)
+    c.set("system/controlDict", "functions", FUNCTIONS[:-1] + """
+    creep      { type bondCreep; libs ("libdemCoupling.so");
+                 writeControl timeStep; writeInterval 10; }
+}""")
+    c.set(DEM, "viscousDrag", DRAG)
+    c.set(DEM, "bonds", "{ youngsModulus 1e9; normalDampingRatio 0.2; shearDampingRatio 0.2;"
+                        " creep { type maxwell; contactViscosity 6e6; shear yes; twist yes;"
+                        " bend no; }"
+                        f" strength {STRENGTHS['weak']} formation {{ type frozenOnContact;"
+                        " areaFraction (0.03125 0.09375); interval 10; seed 3; } }")
+    c.run("blockMesh")
+    c.run("demFoam")
+
+    creep = read_columns(c.file("postProcessing/creep/0/creep.dat"))
+    packing = read_columns(c.file("postProcessing/packing/0/packing.dat"))
+    assert list(creep) == CREEP_COLUMNS
+    np.testing.assert_array_equal(creep["bondsIntact"], packing["bondsIntact"])
+    for mechanism in ("shear", "twist"):
+        total = creep[mechanism]
+        assert np.all(np.diff(total) >= 0), f"{mechanism} creep decreased"
+        intact = creep["mean" + mechanism.capitalize()] * creep["bondsIntact"]
+        assert np.all(total >= intact * (1 - 1e-12))
+        assert total[-1] > 0
+    for mechanism in ("normal", "bend"):
+        assert np.all(creep[mechanism] == 0) and np.all(creep["mean" + mechanism.capitalize()] == 0)
+    assert packing["bondsBroken"][-1] > 0        # the breaking bonds' creep was kept
+
+    checked = 0
+    for t, path in grain_files(c.path, "bonds"):
+        bonds = read_vtp_lines(path)
+        row = np.flatnonzero(np.isclose(creep["time"], t, rtol=0, atol=1e-9))
+        if len(bonds["lines"]) == 0 or len(row) == 0:
+            continue
+        for mechanism, array in MECHANISMS.items():
+            np.testing.assert_allclose(creep["mean" + mechanism.capitalize()][row[-1]],
+                                       bonds[array].mean(), rtol=1e-12, atol=0)
+        checked += 1
+    assert checked > 0
+    print(f"t = {creep['time'][-1]} s: {packing['bondsBroken'][-1]:.0f} bonds broken,"
+          f" {creep['bondsIntact'][-1]:.0f} intact; shear creep {creep['shear'][-1]:.4e} m"
+          f" (intact bonds {creep['meanShear'][-1] * creep['bondsIntact'][-1]:.4e} m),"
+          f" twist {creep['twist'][-1]:.4e} rad; checked against {checked} .vtp files")
+
+
 def write_layered_grains(path, seed=1):
     """72 spheres of radius 4 to 4.5 mm in 6 layers of 3 x 4 inside
     wallBox's walls (x in [0, 0.04], periodic y of 0.04), alternate layers

@@ -36,7 +36,8 @@ WITH_FLAGS = [(DEM, "grainFlags", "{ base { flag fixed; zMax 0.02; } }")]
 WITH_GRAIN_SIZE = [(DARCY, "permeability", "{ type kozenyCarmanGrainSize; d 1e-4;"
                     " porosityMin 0.1; porosityMax 0.9; }")]
 WITH_STATS = [(CTL, "functions/stats", '{ type packingStatistics; libs ("libdemCoupling.so"); }'),
-              (CTL, "functions/walls", '{ type wallStress; libs ("libdemCoupling.so"); }')]
+              (CTL, "functions/walls", '{ type wallStress; libs ("libdemCoupling.so"); }'),
+              (CTL, "functions/creep", '{ type bondCreep; libs ("libdemCoupling.so"); }')]
 WITH_UNIFORM = [(DARCY, "solidPhase", "{ type uniformPorosity; porosity 0.4; }")]
 
 # id: template, solver, set-up, file, scope ('' the top level), the mistyped
@@ -100,6 +101,8 @@ MISTYPED = {
                                     "Log", "yes", "log"),
     "functions-wallStress": ("grainColumn", "demFoam", WITH_STATS, CTL, "functions/walls",
                              "timeStrat", "0", "timeStart"),
+    "functions-bondCreep": ("grainColumn", "demFoam", WITH_STATS, CTL, "functions/creep",
+                            "writeIntrval", "10", "writeInterval"),
 }
 
 

@@ -255,6 +255,17 @@ TEST(BondLaw, MaxwellRelaxationAndStability)
         EXPECT_LT(relative(s.shearForce.y(), S), 1e-12);
         EXPECT_LT(relative(twist.twistMoment, Mt), 1e-12);
         EXPECT_LT(relative(s.bendMoment.z(), Mb), 1e-12);
+        // The creep displacement: the imposed motion less the spring's, rate (t - X / (K rate)),
+        // summed step by step (round-off of the difference: 1e-10).
+        const double creepS = std::fabs(v - R * w) * (t + tauS * std::expm1(-t / tauS));
+        const double creepT = w * (t + tauS * std::expm1(-t / tauS));
+        const double creepB = w * (t + tauB * std::expm1(-t / tauB));
+        std::printf("  creep: shear %.9e m (%.9e), twist %.9e (%.9e), bend %.9e rad (%.9e)\n",
+                    s.creepShear, creepS, twist.creepTwist, creepT, s.creepBend, creepB);
+        EXPECT_LT(relative(s.creepShear, creepS), 1e-10);
+        EXPECT_LT(relative(twist.creepTwist, creepT), 1e-10);
+        EXPECT_LT(relative(s.creepBend, creepB), 1e-10);
+        EXPECT_EQ(s.creepNormal, 0.0);
         // Bounded at dt >> tau: never above the steady value K rate tau.
         EXPECT_LE(std::fabs(s.shearForce.y()), std::fabs(shearRate) * tauS * (1 + 1e-12));
         for (int i = 0; i < n; ++i)
@@ -314,6 +325,9 @@ TEST(BondLaw, CompressivePowerLawCreep)
         std::printf("  dt %.0e s: sigma after %.0e s %.9e Pa (closed form %.9e)\n", step, t,
                     -s.normalForce / area, sigma);
         EXPECT_LT(relative(-s.normalForce / area, sigma), 1e-10);
+        // Held still, all the stress lost went into creep: (sigma0 - sigma) / k_ne (the 1e-10
+        // of sigma above, over sigma0 - sigma ~ 2.6e-4 sigma0: 1e-6).
+        EXPECT_LT(relative(s.creepNormal, (sigma0 - sigma) / kne), 1e-6);
     }
     // Steady compression at approach speed v: the creep rate balances it, 2 Rbar A(T) sigma^m
     // = v. A creep law 40/0.00554458 times faster than ice's reaches it in seconds (sigma about
@@ -327,6 +341,12 @@ TEST(BondLaw, CompressivePowerLawCreep)
     s.normalForce = -0.5 * sigmaSteady * area;
     for (int i = 0; i < 500000; ++i)
         law.advance(s, g, driven(Vector3d(-v, 0, 0), Vector3d::Zero()));
+    // Creep is the approach less the spring's shortening (round-off over 5e5 steps: 1e-9).
+    const double approachLessElastic =
+        v * 500000 * step - (-s.normalForce - 0.5 * sigmaSteady * area) / (kne * area);
+    std::printf("  normal creep %.9e m, approach less elastic %.9e m\n", s.creepNormal,
+                approachLessElastic);
+    EXPECT_LT(relative(s.creepNormal, approachLessElastic), 1e-9);
     std::printf("  steady stress at %.0e m/s: %.6e Pa (creep law %.6e)\n", v, -s.normalForce / area,
                 sigmaSteady);
     EXPECT_LT(relative(-s.normalForce / area, sigmaSteady), 1e-4);

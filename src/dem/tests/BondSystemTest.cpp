@@ -180,6 +180,115 @@ TEST_P(BondedGrains, MaxwellStableAtStepsFarAboveTau)
     EXPECT_LE(after, S * std::exp(-p.timeStep / tauS) * (1 + 1e-6));
 }
 
+TEST_P(BondedGrains, CreepDisplacementsAreTheImposedMotionLessTheElastic)
+{
+    // nu_s = 100 Pa s: tau_shear = tau_twist = 1.67e-5 s, tau_bend = 1e-5 s. B slides, twists
+    // or bends at a constant rate for 50 steps (t = 3 tau_shear): in each Maxwell element the
+    // imposed motion is the spring's plus the dashpot's, so the creep is u - X / K, and at a
+    // constant rate u (t - tau (1 - e^{-t/tau})) in closed form. The slide tilts the normal by
+    // u / (2R) = 2.5e-5 (second-order error 1e-9); tolerance 1e-6 as for the elastic slopes.
+    // Bending about z at B's centre also slides the contact point: only the bend is checked.
+    // The mechanisms not driven creep by round-off only: below 1e-9 of the driven one's
+    // (rotations compared as arc lengths at R).
+    dem::Parameters p = bondedParameters(parameters());
+    p.bonds.creep = dem::BondCreep::maxwell;
+    p.bonds.contactViscosity = 100.0;
+    const double tauS = 100.0 / (0.6 * E), tauB = 100.0 / E, v = 1e-3, w = 1.0;
+    const double t = 50 * p.timeStep;
+    const auto closedForm = [t](double rate, double tau)
+    { return rate * (t + tau * std::expm1(-t / tau)); };
+    struct Mode
+    {
+        const char* name;
+        Vector3d velocity, omega;
+    };
+    for (const Mode& mode : {Mode{"shear", Vector3d(0, v, 0), Vector3d::Zero()},
+                             Mode{"twist", Vector3d::Zero(), Vector3d(w, 0, 0)},
+                             Mode{"bend", Vector3d::Zero(), Vector3d(0, 0, w)}})
+    {
+        dem::System s(p);
+        addPair(s);
+        drive(s, mode.velocity, mode.omega);
+        s.step(50);
+        const dem::BondData b = s.bonds();
+        const dem::BondCounts counts = s.bondCounts();
+        ASSERT_EQ(b.first.size(), 1u);
+        const std::string name = mode.name;
+        double creep = 0, imposedLessElastic = 0, expected = 0, total = 0;
+        if (name == "shear")
+        {
+            creep = b.creepShear[0];
+            imposedLessElastic = v * t - bondVector(b.shearForce).norm() / (kse * area);
+            expected = closedForm(v, tauS);
+            total = counts.intactCreep[1];
+            EXPECT_LT(R * (b.creepTwist[0] + b.creepBend[0]), 1e-9 * creep);
+        }
+        if (name == "twist")
+        {
+            creep = b.creepTwist[0];
+            imposedLessElastic = w * t - b.twistMoment[0] / (kse * twistJ);
+            expected = closedForm(w, tauS);
+            total = counts.intactCreep[2];
+            EXPECT_LT(b.creepShear[0] + R * b.creepBend[0], 1e-9 * R * creep);
+        }
+        if (name == "bend")
+        {
+            creep = b.creepBend[0];
+            imposedLessElastic = w * t - bondVector(b.bendMoment).norm() / (kne * bendI);
+            expected = closedForm(w, tauB);
+            total = counts.intactCreep[3];
+            EXPECT_LT(R * b.creepTwist[0], 1e-9 * R * creep);
+        }
+        std::printf("  %s: creep %.9e, imposed - elastic %.9e, closed form %.9e\n", mode.name,
+                    creep, imposedLessElastic, expected);
+        EXPECT_LT(relative(creep, imposedLessElastic), 1e-6);
+        EXPECT_LT(relative(creep, expected), 1e-6);
+        EXPECT_EQ(total, creep);          // one bond: the sample's sum is its own
+        EXPECT_EQ(b.creepNormal[0], 0.0); // no compressive creep law: exactly none
+    }
+}
+
+TEST_P(BondedGrains, BrokenBondsKeepTheirCreepInTheSample)
+{
+    // B slides for 50 steps with Maxwell creep, then is pulled off at 0.2 delta_1 per step:
+    // the bond breaks and is removed, and the sample's creep keeps what it crept. While being
+    // pulled the stored shear force still relaxes (at most |S| / (k_se A) more creep in all,
+    // (1 - e^{-dt/tau}) of it in the step that breaks it).
+    dem::Parameters p = bondedParameters(parameters());
+    p.bonds.creep = dem::BondCreep::maxwell;
+    p.bonds.contactViscosity = 100.0;
+    p.bonds.temperature = -10.0;
+    p.bonds.strength = dem::BondStrength::iceTemperature;
+    p.bonds.softeningRatio = 1e3;
+    const double tauS = 100.0 / (0.6 * E), delta1 = 1.45552e6 / kne;
+    dem::System s(p);
+    addPair(s);
+    drive(s, Vector3d(0, 1e-3, 0), Vector3d::Zero());
+    s.step(50);
+    drive(s, Vector3d(0.2 * delta1 / p.timeStep, 0, 0), Vector3d::Zero());
+    double lastCreep = 0, lastElastic = 0;
+    int steps = 0;
+    while (s.bondCounts().intact == 1 && steps < 100)
+    {
+        const dem::BondData b = s.bonds();
+        lastCreep = b.creepShear[0];
+        lastElastic = bondVector(b.shearForce).norm() / (kse * area);
+        s.step(1);
+        ++steps;
+    }
+    const dem::BondCounts counts = s.bondCounts();
+    std::printf("  broken after %d steps of the pull: shear creep %.9e m (last intact %.9e m, "
+                "stored elastic %.3e m)\n",
+                steps, counts.brokenCreep[1], lastCreep, lastElastic);
+    ASSERT_EQ(counts.broken, 1u);
+    EXPECT_EQ(counts.intact, 0u);
+    EXPECT_EQ(counts.intactCreep[1], 0.0);
+    EXPECT_GE(counts.brokenCreep[1], lastCreep);
+    EXPECT_LE(counts.brokenCreep[1],
+              lastCreep + lastElastic * -std::expm1(-p.timeStep / tauS) * (1 + 1e-9));
+    EXPECT_GT(lastCreep, 0.5 * 1e-3 * 50 * p.timeStep); // it did creep: t = 3 tau
+}
+
 TEST_P(BondedGrains, TensileRuptureAtTheIceStrength)
 {
     // sigma_ice(-10 C) = 0.99648 + 0.45904 = 1.45552 MPa. Pulled at 1e-4 of delta_1 per step
@@ -441,6 +550,10 @@ TEST_P(BondedGrains, RestartWithEveryMechanismContinuesBitForBit)
     EXPECT_TRUE(identical(a.twistMoment, b.twistMoment));
     EXPECT_TRUE(identical(a.bendMoment, b.bendMoment));
     EXPECT_TRUE(identical(a.age, b.age));
+    EXPECT_TRUE(identical(a.creepNormal, b.creepNormal));
+    EXPECT_TRUE(identical(a.creepShear, b.creepShear));
+    EXPECT_TRUE(identical(a.creepTwist, b.creepTwist));
+    EXPECT_TRUE(identical(a.creepBend, b.creepBend));
     const dem::GrainData ga = original.grains(), gb = restarted.grains();
     EXPECT_TRUE(identical(ga.position, gb.position));
     EXPECT_TRUE(identical(ga.velocity, gb.velocity));

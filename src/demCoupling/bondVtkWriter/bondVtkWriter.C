@@ -56,6 +56,8 @@ void Foam::bondVtkWriter::writeVtp
         !sized(bonds.second, 1) || !sized(bonds.patchRadius, 1)
      || !sized(bonds.normalForce, 1) || !sized(bonds.shearForce, 3)
      || !sized(bonds.age, 1) || !sized(bonds.softening, 1)
+     || !sized(bonds.creepNormal, 1) || !sized(bonds.creepShear, 1)
+     || !sized(bonds.creepTwist, 1) || !sized(bonds.creepBend, 1)
     )
     {
         FatalErrorInFunction
@@ -68,12 +70,17 @@ void Foam::bondVtkWriter::writeVtp
     points->SetNumberOfPoints(2*n);
     vtkNew<vtkCellArray> lines;
     vtkNew<vtkDoubleArray> patchRadius, normalForce, shearForce, age;
+    vtkNew<vtkDoubleArray> creepNormal, creepShear, creepTwist, creepBend;
     vtkNew<vtkIntArray> softening, first, second;
     named(patchRadius, "patchRadius", n);
     named(normalForce, "normalForce", n);
     named(shearForce, "shearForce", n);
     named(age, "age", n);
     named(softening, "softening", n);
+    named(creepNormal, "creepNormal", n);
+    named(creepShear, "creepShear", n);
+    named(creepTwist, "creepTwist", n);
+    named(creepBend, "creepBend", n);
     named(first, "first", n);
     named(second, "second", n);
 
@@ -110,6 +117,10 @@ void Foam::bondVtkWriter::writeVtp
         shearForce->SetValue(b, std::sqrt(s[0]*s[0] + s[1]*s[1] + s[2]*s[2]));
         age->SetValue(b, bonds.age[b]);
         softening->SetValue(b, bonds.softening[b]);
+        creepNormal->SetValue(b, bonds.creepNormal[b]);
+        creepShear->SetValue(b, bonds.creepShear[b]);
+        creepTwist->SetValue(b, bonds.creepTwist[b]);
+        creepBend->SetValue(b, bonds.creepBend[b]);
         first->SetValue(b, i);
         second->SetValue(b, j);
     }
@@ -126,6 +137,10 @@ void Foam::bondVtkWriter::writeVtp
             static_cast<vtkDataArray*>(shearForce.Get()),
             static_cast<vtkDataArray*>(age.Get()),
             static_cast<vtkDataArray*>(softening.Get()),
+            static_cast<vtkDataArray*>(creepNormal.Get()),
+            static_cast<vtkDataArray*>(creepShear.Get()),
+            static_cast<vtkDataArray*>(creepTwist.Get()),
+            static_cast<vtkDataArray*>(creepBend.Get()),
             static_cast<vtkDataArray*>(first.Get()),
             static_cast<vtkDataArray*>(second.Get())
         }

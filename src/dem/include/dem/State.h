@@ -7,6 +7,7 @@
 
 #include "dem/Parameters.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -70,6 +71,9 @@ struct BondData
     std::vector<double> point;       //!< contact point (3), wrapped into the periodic box
     std::vector<double> age;         //!< time since the bond formed [s]
     std::vector<std::uint8_t> softening; //!< 1 once r_b shrinks (past peak strength)
+    //- Creep since the bond formed, per mechanism: path length of the creep displacement,
+    //- normal and shear [m], twist and bend [rad] (doc/EQUATIONS.md, "Bonds").
+    std::vector<double> creepNormal, creepShear, creepTwist, creepBend;
 };
 
 //- Bond totals: intact now, formed and broken since the System was built (restart keeps them),
@@ -78,6 +82,9 @@ struct BondCounts
 {
     std::size_t intact = 0, formed = 0, broken = 0, apart = 0;
     double meanPatchRadius = 0.0; //!< over intact bonds (0 without)
+    //- Creep of the intact bonds and of those broken since the System was built, summed, per
+    //- mechanism in the order normal [m], shear [m], twist [rad], bend [rad] (BondData).
+    std::array<double, 4> intactCreep = {}, brokenCreep = {};
 };
 
 struct SystemState

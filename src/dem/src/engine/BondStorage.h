@@ -34,6 +34,8 @@ struct BondField
 {
     const char* name;
     int component, components;
+    //- Absent from states written before the field existed: imported as zero.
+    bool zeroIfAbsent = false;
 };
 
 inline const std::vector<BondField>& bondFields()
@@ -45,7 +47,11 @@ inline const std::vector<BondField>& bondFields()
                                                   {"patchRadius", kBondPatchRadius, 1},
                                                   {"onsetRadius", kBondOnsetRadius, 1},
                                                   {"age", kBondAge, 1},
-                                                  {"softening", kBondSoftening, 1}};
+                                                  {"softening", kBondSoftening, 1},
+                                                  {"creepNormal", kBondCreepNormal, 1, true},
+                                                  {"creepShear", kBondCreepShear, 1, true},
+                                                  {"creepTwist", kBondCreepTwist, 1, true},
+                                                  {"creepBend", kBondCreepBend, 1, true}};
     return fields;
 }
 

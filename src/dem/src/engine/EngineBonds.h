@@ -49,6 +49,10 @@ void EngineImpl<Exec>::computeBondForces(double dt)
                                            thrust::raw_pointer_cast(bondBroken_.data())});
     if (broken > 0.0)
     {
+        const double* flags = thrust::raw_pointer_cast(bondBroken_.data());
+        for (int c = 0; c < 4; ++c)
+            brokenBondCreep_[c] +=
+                exec_.sumOf(count, BrokenBondCreep{bonds_.view(), flags, kBondCreepNormal + c});
         bonds_.removeBroken(exec_.policy(), bondBroken_);
         bondsBroken_ += std::size_t(std::llround(broken));
         indexBonds();
@@ -196,6 +200,10 @@ BondData EngineImpl<Exec>::bonds() const
         out.twistMoment.push_back(component(kBondTwistMoment, b));
         out.age.push_back(component(kBondAge, b));
         out.softening.push_back(component(kBondSoftening, b) != 0.0 ? 1 : 0);
+        out.creepNormal.push_back(component(kBondCreepNormal, b));
+        out.creepShear.push_back(component(kBondCreepShear, b));
+        out.creepTwist.push_back(component(kBondCreepTwist, b));
+        out.creepBend.push_back(component(kBondCreepBend, b));
         for (int d = 0; d < 3; ++d)
         {
             out.shearForce.push_back(component(kBondShearForce + d, b));
@@ -235,6 +243,7 @@ BondCounts EngineImpl<Exec>::bondCounts() const
     BondCounts out;
     out.formed = bondsFormed_;
     out.broken = bondsBroken_;
+    out.brokenCreep = brokenBondCreep_;
     const int count = bonds_.count();
     out.intact = std::size_t(count);
     if (count == 0)
@@ -247,6 +256,10 @@ BondCounts EngineImpl<Exec>::bondCounts() const
     {
         out.apart += touching[b] == 0.0 ? 1 : 0;
         radiusSum += data.patchRadius[b]; // in that order: whatever the grain order
+        out.intactCreep[0] += data.creepNormal[b];
+        out.intactCreep[1] += data.creepShear[b];
+        out.intactCreep[2] += data.creepTwist[b];
+        out.intactCreep[3] += data.creepBend[b];
     }
     out.meanPatchRadius = radiusSum / count;
     return out;

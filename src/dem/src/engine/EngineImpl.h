@@ -510,6 +510,8 @@ private:
     Vec<double> bondBroken_;
     mutable Vec<double> bondReadback_;
     std::size_t bondsFormed_ = 0, bondsBroken_ = 0; //!< since the System was built
+    //- Creep (normal, shear, twist, bend) of the bonds broken since the System was built.
+    std::array<double, 4> brokenBondCreep_ = {};
     std::vector<WallState> walls_;
     Vec<int> cellKey_, order_, cellStart_, counts_;
     //- FluidFields as copied by setFluid: f (3 per cell), beta (1 per cell, empty: no drag),

@@ -122,6 +122,7 @@ SystemState EngineImpl<Exec>::exportState() const
                 state.begin() + f.component * count,
                 state.begin() + (f.component + f.components) * count);
         s.integers["bonds.counters"] = {std::int64_t(bondsFormed_), std::int64_t(bondsBroken_)};
+        s.reals["bonds.brokenCreep"].assign(brokenBondCreep_.begin(), brokenBondCreep_.end());
     }
     return s;
 }
@@ -259,6 +260,7 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
     std::vector<int> first, second;
     std::vector<double> state;
     bondsFormed_ = bondsBroken_ = 0;
+    brokenBondCreep_ = {};
     if (stored) // else a state written without bonds: none yet
     {
         const std::vector<std::int64_t>& a = entry(s.integers, "bonds.first");
@@ -279,6 +281,8 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
         for (const BondField& f : bondFields())
         {
             const std::string name = std::string("bonds.") + f.name;
+            if (f.zeroIfAbsent && s.reals.find(name) == s.reals.end())
+                continue; // a state written before the field existed
             const std::vector<double>& v = entry(s.reals, name);
             if (v.size() != std::size_t(f.components) * count)
                 throw Error("importState: '" + name + "' has " + std::to_string(v.size()) +
@@ -287,6 +291,15 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
         }
         bondsFormed_ = std::size_t(counters[0]);
         bondsBroken_ = std::size_t(counters[1]);
+        const auto crept = s.reals.find("bonds.brokenCreep"); // absent before it existed
+        if (crept != s.reals.end())
+        {
+            if (crept->second.size() != brokenBondCreep_.size())
+                throw Error("importState: 'bonds.brokenCreep' has " +
+                            std::to_string(crept->second.size()) + " values; expected " +
+                            std::to_string(brokenBondCreep_.size()));
+            std::copy(crept->second.begin(), crept->second.end(), brokenBondCreep_.begin());
+        }
     }
     bonds_.assign(first, second, state);
     indexBonds(); // the order they had: a function of the grain order, restored above

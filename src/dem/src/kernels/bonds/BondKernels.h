@@ -33,7 +33,11 @@ enum BondStateComponent
     kBondOnsetRadius = 9,
     kBondAge = 10,
     kBondSoftening = 11, // 0 or 1
-    kBondStateComponents = 12
+    kBondCreepNormal = 12,
+    kBondCreepShear = 13,
+    kBondCreepTwist = 14,
+    kBondCreepBend = 15,
+    kBondStateComponents = 16
 };
 
 //- Per bond: force on A (3), torque on A (3), torque on B (3); on B the force is minus A's.
@@ -71,6 +75,10 @@ struct BondView
         st.onsetRadius = x[kBondOnsetRadius * s];
         st.age = x[kBondAge * s];
         st.softening = x[kBondSoftening * s] != 0.0;
+        st.creepNormal = x[kBondCreepNormal * s];
+        st.creepShear = x[kBondCreepShear * s];
+        st.creepTwist = x[kBondCreepTwist * s];
+        st.creepBend = x[kBondCreepBend * s];
         st.broken = false;
         return st;
     }
@@ -89,6 +97,10 @@ struct BondView
         x[kBondOnsetRadius * s] = st.onsetRadius;
         x[kBondAge * s] = st.age;
         x[kBondSoftening * s] = st.softening ? 1.0 : 0.0;
+        x[kBondCreepNormal * s] = st.creepNormal;
+        x[kBondCreepShear * s] = st.creepShear;
+        x[kBondCreepTwist * s] = st.creepTwist;
+        x[kBondCreepBend * s] = st.creepBend;
     }
 };
 
@@ -166,6 +178,20 @@ struct BondGather
             const double* t = l + (isA ? 3 : 6);
             torque += Vector3d(t[0], t[1], t[2]);
         }
+    }
+};
+
+//- Creep component `component` of the bonds that broke this step (broken[b] = 1), summed
+//- before they are removed: the sample's creep keeps what broken bonds crept.
+struct BrokenBondCreep
+{
+    BondView bonds;
+    const double* broken;
+    int component;
+
+    DEM_HD double operator()(int b) const
+    {
+        return broken[b] != 0.0 ? bonds.state[long(component) * bonds.count + b] : 0.0;
     }
 };
 

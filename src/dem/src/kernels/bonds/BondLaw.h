@@ -36,8 +36,12 @@ struct BondState
     double patchRadius = 0.0;               //!< r_b
     double onsetRadius = 0.0;               //!< r_b when softening began (= r_b before)
     double age = 0.0;                       //!< time since the bond formed [s]
-    bool softening = false;                 //!< past peak strength (r_b only shrinks)
-    bool broken = false;                    //!< set by advance: remove the bond
+    //- Creep accumulated since the bond formed, per mechanism: the path length of the creep
+    //- displacement (load relaxed by creep over the mode's stiffness, summed in magnitude step
+    //- by step): normal and shear [m], twist and bend [rad].
+    double creepNormal = 0.0, creepShear = 0.0, creepTwist = 0.0, creepBend = 0.0;
+    bool softening = false; //!< past peak strength (r_b only shrinks)
+    bool broken = false;    //!< set by advance: remove the bond
 };
 
 // BondGeometry (where the bond sits) and bondGeometry() are in BondGeometry.h.
@@ -142,15 +146,29 @@ private:
         s.shearForce = rotateIntoPlane(s.shearForce, n, theta);
         s.bendMoment = rotateIntoPlane(s.bendMoment, n, theta);
 
-        // 2. Elastic increments with the patch at the start of the step, and creep.
-        s.normalForce += patch.normalStiffness * patch.area * du.normal;
-        s.normalForce = compressiveCreep.relax(s.normalForce, patch.area);
-        s.shearForce =
-            shearCreep.update(s.shearForce, Vector3d(patch.shearStiffness * patch.area * du.shear));
-        s.twistMoment =
-            twistCreep.update(s.twistMoment, patch.shearStiffness * patch.twistInertia * du.twist);
-        s.bendMoment = bendCreep.update(
-            s.bendMoment, Vector3d(patch.normalStiffness * patch.bendInertia * du.bend));
+        // 2. Elastic increments with the patch at the start of the step, and creep. The load a
+        //    mechanism's creep relaxed this step (purely elastic load minus the crept one) over
+        //    the mode's stiffness is the creep displacement of the step: in a Maxwell element
+        //    the imposed increment splits into the spring's (dX / K) and the dashpot's.
+        const double kn = patch.normalStiffness * patch.area,
+                     ks = patch.shearStiffness * patch.area;
+        const double kt = patch.shearStiffness * patch.twistInertia;
+        const double kb = patch.normalStiffness * patch.bendInertia;
+        const double elasticN = s.normalForce + kn * du.normal;
+        const Vector3d elasticS = s.shearForce + ks * du.shear;
+        const double elasticMt = s.twistMoment + kt * du.twist;
+        const Vector3d elasticMb = s.bendMoment + kb * du.bend;
+        s.normalForce = compressiveCreep.relax(elasticN, patch.area);
+        s.shearForce = shearCreep.update(s.shearForce, Vector3d(ks * du.shear));
+        s.twistMoment = twistCreep.update(s.twistMoment, kt * du.twist);
+        s.bendMoment = bendCreep.update(s.bendMoment, Vector3d(kb * du.bend));
+        if (kn > 0.0) // a patch shrunk to nothing (brokenFraction 0) has no stiffness
+        {
+            s.creepNormal += std::fabs(elasticN - s.normalForce) / kn;
+            s.creepShear += (elasticS - s.shearForce).norm() / ks;
+            s.creepTwist += std::fabs(elasticMt - s.twistMoment) / kt;
+            s.creepBend += (elasticMb - s.bendMoment).norm() / kb;
+        }
 
         // 3. Sintering grows an intact patch under compression (new material, no load).
         if (sintering.on && !s.softening)
