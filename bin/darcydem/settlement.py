@@ -21,9 +21,9 @@ Figs 5-10, run through real case directories:
                1 MPa s), and optionally one with a creep mechanism off.
 
 The measurements come from the function objects wallStress (lid stress
-P_zz, side stress P_xx) and packingStatistics (density, coordination number,
-bond counts, lid motion, bulk viscosity); the figures mirror the paper's
-Figs 6-10. Every stage is a case directory under <study>/stages/<stage>,
+P_zz, side stress P_xx), packingStatistics (density, coordination number,
+bond counts, lid motion, bulk viscosity) and bondCreep (the bonds' creep
+per mechanism); the figures mirror the paper's Figs 6-10. Every stage is a case directory under <study>/stages/<stage>,
 made from the template case in <study>; DARCYDEM_BACKEND=cpu|cuda|auto sets
 the DEM backend (bin/darcydem/case.py). Sizes: SIZES below.
 """
@@ -83,9 +83,14 @@ RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
 RELAX_DRAG = 3e-4       # [N s/m]: m/c about 5 ms for a grain of 1.6e-6 kg
 PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
 
-# Function objects' output, as written by wallStress and packingStatistics
+# Function objects' output, as written by wallStress, packingStatistics and bondCreep
 WALL_STRESS = "postProcessing/wallStress/0/wallStress.dat"
 PACKING = "postProcessing/packingStatistics/0/packing.dat"
+CREEP = "postProcessing/bondCreep/0/creep.dat"
+# The paper's Figs 8a-c: shear, bending and twisting creep (bondCreep's columns)
+CREEP_MECHANISMS = (("shear", "(a) shear creep rate per bond [m/s]"),
+                    ("bend", "(b) bending creep rate per bond [rad/s]"),
+                    ("twist", "(c) twisting creep rate per bond [rad/s]"))
 
 
 def label(nu):
@@ -93,7 +98,8 @@ def label(nu):
 
 
 class Run:
-    """The measurements of one settlement run (the two .dat files)."""
+    """The measurements of one settlement run (the .dat files; bondCreep's
+    only where the run wrote it)."""
 
     def __init__(self, case_dir, nu, ly):
         self.nu = nu
@@ -112,6 +118,30 @@ class Run:
         broken0 = self.p["bondsBroken"][0]
         self.formed = self.p["bondsFormed"] - formed0    # new frozen bonds since the start
         self.broken = self.p["bondsBroken"] - broken0
+        path = os.path.join(case_dir, CREEP)
+        self.creep = None
+        if os.path.exists(path):
+            c = read_columns(path)
+            m = min(n, len(c["time"]))
+            if m == n and np.array_equal(c["time"][:n], self.t):
+                self.creep = {k: v[:n] for k, v in c.items()}
+
+    def mechanism_rates(self, width=None):
+        """{mechanism: creep rate per intact bond} (normal, shear: m/s;
+        twist, bend: rad/s): the rate of the sample's Hanning-smoothed creep
+        sum (broken bonds' creep stays in it) over the intact bonds; None
+        without bondCreep's file."""
+        if self.creep is None:
+            return None
+        width = width or max(5, len(self.t) // 40)
+        bonds = np.maximum(self.creep["bondsIntact"], 1)
+        rates = {}
+        for mechanism in ("normal", "shear", "twist", "bend"):
+            rate = np.gradient(hanning_smooth(self.creep[mechanism], width), self.t) / bonds
+            rate[:width // 2] = np.nan
+            rate[len(rate) - width // 2:] = np.nan
+            rates[mechanism] = rate
+        return rates
 
     def creep_rates(self, width=None):
         """(axial strain rate, bulk viscosity) from the Hanning-smoothed lid
@@ -214,7 +244,7 @@ class SettlementStudy:
         c.set(ctl, "deltaT", "%.12g" % fluid_dt)
         c.set(ctl, "endTime", "%.12g" % (steps * fluid_dt))
         c.set(ctl, "writeInterval", max(1, steps // writes))
-        for fo in ("wallStress", "packingStatistics"):
+        for fo in ("wallStress", "packingStatistics", "bondCreep"):
             c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
         c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
 
@@ -302,6 +332,14 @@ class SettlementStudy:
             "meanPxxLoaded": float(np.mean(run.pxx[loaded])),
             "meanStrainRateLoaded": float(np.nanmean(rate[loaded])),
         }
+        if run.creep is not None:
+            # creep per intact bond over the loaded rows (the paper's Figs 8a-c)
+            rates = run.mechanism_rates()
+            self.results["runs"][name]["meanCreepRatePerBondLoaded"] = {
+                m: float(np.nanmean(rates[m][loaded])) for m in ("normal", "shear", "twist", "bend")}
+            self.results["runs"][name]["creepPerBondEnd"] = {
+                m: float(run.creep[m][-1] / max(run.creep["bondsIntact"][-1], 1))
+                for m in ("normal", "shear", "twist", "bend")}
         return run
 
     def run(self, creep_off=(), keep_sample=False):
@@ -368,7 +406,7 @@ def viscosity_at(run, density):
 
 def plot_figures(runs, out_dir, box, results=None):
     """settlementTime.png (Fig. 6), settlementDensity.png (Fig. 7),
-    settlementCreep.png (Fig. 8d), settlementViscosity.png (Fig. 9),
+    settlementCreep.png (Fig. 8), settlementViscosity.png (Fig. 9),
     settlementScaling.png (Fig. 10) in out_dir."""
     import matplotlib
     matplotlib.use("Agg")
@@ -424,16 +462,28 @@ def plot_figures(runs, out_dir, box, results=None):
         a.set_xlabel("density [kg/m³]")
     save(fig, "settlementDensity.png")
 
-    # Fig. 8 (d): bulk axial strain rate against density (the whole loaded run)
-    fig, ax = plt.subplots(figsize=(6.5, 4))
+    # Fig. 8: (a-c) creep rate per bond of each mechanism, (d) bulk axial strain rate,
+    # against density (the whole loaded run)
+    fig, ax = plt.subplots(2, 2, figsize=(10, 7))
+    ax = ax.ravel()
     for k, r in enumerate(runs):
-        rate, _ = r.creep_rates()
+        c = colours[k % len(colours)]
         m = r.loaded()
-        ax.semilogy(r.density[m], np.where(rate[m] > 0, rate[m], np.nan),
-                    color=colours[k % len(colours)], label=label(r.nu))
-    ax.set_xlabel("density [kg/m³]")
-    ax.set_ylabel("bulk axial strain rate [1/s]")
-    ax.legend(fontsize=7)
+        rates = r.mechanism_rates()
+        for a, (mechanism, _) in zip(ax[:3], CREEP_MECHANISMS):
+            if rates is not None:
+                rate = rates[mechanism][m]
+                a.semilogy(r.density[m], np.where(rate > 0, rate, np.nan), color=c,
+                           label=label(r.nu))
+        rate, _ = r.creep_rates()
+        ax[3].semilogy(r.density[m], np.where(rate[m] > 0, rate[m], np.nan), color=c,
+                       label=label(r.nu))
+    for a, (_, title) in zip(ax[:3], CREEP_MECHANISMS):
+        a.set_ylabel(title)
+    ax[3].set_ylabel("(d) bulk axial strain rate [1/s]")
+    for a in ax:
+        a.set_xlabel("density [kg/m³]")
+    ax[3].legend(fontsize=7)
     save(fig, "settlementCreep.png")
 
     # Fig. 9: bulk viscosity against density, once the lid rests on the creeping sample
