@@ -98,6 +98,15 @@ void checkBondLaw(const BondParameters& b)
                 "bonds.creepActivationEnergy", b.creepActivationEnergy,
                 ">= 0 and finite (powerLaw creep, pressureSintering)");
     }
+    if (b.compressiveCreep == BondCompressiveCreep::powerLaw)
+    {
+        require(b.creepExponent > 1 && b.creepExponent <= 10, "bonds.creepExponent",
+                b.creepExponent, "in (1, 10] (powerLaw creep)");
+        // Sintering's law is A(T) sigma^3 with the same A0: its units hold for one exponent.
+        if (b.sintering == BondSintering::pressureSintering)
+            require(b.creepExponent == 3, "bonds.creepExponent", b.creepExponent,
+                    "3 with pressureSintering (both use A0 [s^-1 Pa^-3])");
+    }
     if (b.strength == BondStrength::iceTemperature)
         require(b.strengthScale > 0 && std::isfinite(b.strengthScale), "bonds.strengthScale",
                 b.strengthScale, "> 0 and finite (iceTemperature strength)");

@@ -400,8 +400,8 @@ TEST_P(BondedGrains, ColumnUnderALidCreepsAtThePowerLawRate)
 {
     // Four spheres stacked along z, bonded in series (three bonds), the lowest fixed, under a
     // stress-controlled lid: each bond carries about F = sigma0 L_x L_y, and compressive creep
-    // shortens it at 2 Rbar A(T) sigma^m, sigma = |N| / A, so the lid sinks at
-    // 3 * 2R A(T) sigma^m. A0 is raised (40 instead of 0.0055) so that the rate is ~2e-5 m/s
+    // shortens it at 2 Rbar A(T) sigma^n, sigma = |N| / A, n = 3, so the lid sinks at
+    // 3 * 2R A(T) sigma^3. A0 is 4e-4 instead of 0.0055 so that the rate is ~2e-5 m/s
     // per bond, and the bonds and the lid are critically damped so that the start dies out
     // within 8 ms (the rate over 2 ms windows is steady to 1e-5 from there). The rate is
     // predicted from the bonds' stored N; the dashpots carry c_n u_c ~ 1e-4 F of the load at
@@ -415,7 +415,7 @@ TEST_P(BondedGrains, ColumnUnderALidCreepsAtThePowerLawRate)
     p.bonds.normalDampingRatio = 1.0;
     p.bonds.shearDampingRatio = 1.0;
     p.bonds.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
-    p.bonds.creepPrefactor = 40.0;
+    p.bonds.creepPrefactor = 4e-4;
     dem::System s(p);
     std::vector<dem::GrainInit> grains(4);
     for (int i = 0; i < 4; ++i)
@@ -439,8 +439,8 @@ TEST_P(BondedGrains, ColumnUnderALidCreepsAtThePowerLawRate)
     s.step(10000);
     const double rate = -(s.wall(lidIndex).position - z0) / (s.time() - t0);
     const double F = sigma0 * box * box;
-    const double A = 40.0 * std::exp(-70e3 / (8.314 * 268.15));
-    const double m = 1.98488 - 0.00607767 * -5.0;
+    const double A = 4e-4 * std::exp(-70e3 / (8.314 * 268.15));
+    const double m = 3.0; // the default exponent
     const dem::BondData b = s.bonds();
     double predicted = 0;
     for (int i = 0; i < 3; ++i)
@@ -582,6 +582,19 @@ TEST_P(BondedGrains, BadBondLawConstantsAreNamed)
              b.creepPrefactor = -1;
          },
          "bonds.creepPrefactor = -1"},
+        {[](dem::BondParameters& b)
+         {
+             b.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
+             b.creepExponent = 1;
+         },
+         "bonds.creepExponent = 1"},
+        {[](dem::BondParameters& b)
+         {
+             b.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
+             b.sintering = dem::BondSintering::pressureSintering;
+             b.creepExponent = 2;
+         },
+         "3 with pressureSintering"},
         {[](dem::BondParameters& b)
          {
              b.strength = dem::BondStrength::constant;

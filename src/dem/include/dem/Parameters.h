@@ -98,7 +98,7 @@ enum class BondCreep
 enum class BondCompressiveCreep
 {
     none,
-    powerLaw //!< normal creep rate 2 Rbar A0 exp(-Q / (R_g T_K)) |sigma_n|^m(T), compression
+    powerLaw //!< normal creep rate 2 Rbar A0 exp(-Q / (R_g T_K)) |sigma_n|^n, both signs
 };
 enum class BondStrength
 {
@@ -131,10 +131,12 @@ struct BondParameters
     BondCreep creep = BondCreep::none;
     double contactViscosity = 0.0;                               //!< nu_s [Pa s] (> 0 with maxwell)
     bool shearCreep = true, twistCreep = true, bendCreep = true; //!< each mechanism on/off
-    // compressive power-law creep (ice constants of Jones & Brunet as defaults)
+    // normal power-law creep (the paper's ice constants as defaults); A0 and Q also set the
+    // sintering rate A(T) sigma^3
     BondCompressiveCreep compressiveCreep = BondCompressiveCreep::none;
-    double creepPrefactor = 0.00554458;    //!< A0 [s^-1 Pa^-m]
+    double creepPrefactor = 0.00554458;    //!< A0 [s^-1 Pa^-n] (the paper's, for n = 3)
     double creepActivationEnergy = 70.0e3; //!< Q [J/mol]
+    double creepExponent = 3.0;            //!< n of the creep law (> 1), the one A0's units hold
     // strength and strain-softening fracture (r_b shrinks; broken below brokenFraction Rbar)
     BondStrength strength = BondStrength::none;
     double strengthScale = 1.0;   //!< iceTemperature: multiplies sigma_ice (scaled runs)

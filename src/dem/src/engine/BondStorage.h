@@ -40,18 +40,20 @@ struct BondField
 
 inline const std::vector<BondField>& bondFields()
 {
-    static const std::vector<BondField> fields = {{"normalForce", kBondNormalForce, 1},
-                                                  {"shearForce", kBondShearForce, 3},
-                                                  {"twistMoment", kBondTwistMoment, 1},
-                                                  {"bendMoment", kBondBendMoment, 3},
-                                                  {"patchRadius", kBondPatchRadius, 1},
-                                                  {"onsetRadius", kBondOnsetRadius, 1},
-                                                  {"age", kBondAge, 1},
-                                                  {"softening", kBondSoftening, 1},
-                                                  {"creepNormal", kBondCreepNormal, 1, true},
-                                                  {"creepShear", kBondCreepShear, 1, true},
-                                                  {"creepTwist", kBondCreepTwist, 1, true},
-                                                  {"creepBend", kBondCreepBend, 1, true}};
+    static const std::vector<BondField> fields = {
+        {"normalForce", kBondNormalForce, 1},
+        {"shearForce", kBondShearForce, 3},
+        {"twistMoment", kBondTwistMoment, 1},
+        {"bendMoment", kBondBendMoment, 3},
+        {"patchRadius", kBondPatchRadius, 1},
+        {"onsetRadius", kBondOnsetRadius, 1},
+        {"age", kBondAge, 1},
+        {"softening", kBondSoftening, 1},
+        {"creepNormal", kBondCreepNormal, 1, true},
+        {"creepShear", kBondCreepShear, 1, true},
+        {"creepTwist", kBondCreepTwist, 1, true},
+        {"creepBend", kBondCreepBend, 1, true},
+        {"normalCreepOffset", kBondNormalCreepOffset, 1, true}};
     return fields;
 }
 

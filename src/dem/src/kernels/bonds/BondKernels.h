@@ -37,7 +37,8 @@ enum BondStateComponent
     kBondCreepShear = 13,
     kBondCreepTwist = 14,
     kBondCreepBend = 15,
-    kBondStateComponents = 16
+    kBondNormalCreepOffset = 16,
+    kBondStateComponents = 17
 };
 
 //- Per bond: force on A (3), torque on A (3), torque on B (3); on B the force is minus A's.
@@ -79,6 +80,7 @@ struct BondView
         st.creepShear = x[kBondCreepShear * s];
         st.creepTwist = x[kBondCreepTwist * s];
         st.creepBend = x[kBondCreepBend * s];
+        st.normalCreepOffset = x[kBondNormalCreepOffset * s];
         st.broken = false;
         return st;
     }
@@ -101,6 +103,7 @@ struct BondView
         x[kBondCreepShear * s] = st.creepShear;
         x[kBondCreepTwist * s] = st.creepTwist;
         x[kBondCreepBend * s] = st.creepBend;
+        x[kBondNormalCreepOffset * s] = st.normalCreepOffset;
     }
 };
 

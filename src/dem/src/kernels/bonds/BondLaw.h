@@ -40,6 +40,8 @@ struct BondState
     //- displacement (load relaxed by creep over the mode's stiffness, summed in magnitude step
     //- by step): normal and shear [m], twist and bend [rad].
     double creepNormal = 0.0, creepShear = 0.0, creepTwist = 0.0, creepBend = 0.0;
+    //- Net normal creep of the power law (opening positive) [m], within +-Rbar.
+    double normalCreepOffset = 0.0;
     bool softening = false; //!< past peak strength (r_b only shrinks)
     bool broken = false;    //!< set by advance: remove the bond
 };
@@ -158,7 +160,8 @@ private:
         const Vector3d elasticS = s.shearForce + ks * du.shear;
         const double elasticMt = s.twistMoment + kt * du.twist;
         const Vector3d elasticMb = s.bendMoment + kb * du.bend;
-        s.normalForce = compressiveCreep.relax(elasticN, patch.area);
+        s.normalForce =
+            compressiveCreep.relax(elasticN, patch.area, kn, meanRadius, s.normalCreepOffset);
         s.shearForce = shearCreep.update(s.shearForce, Vector3d(ks * du.shear));
         s.twistMoment = twistCreep.update(s.twistMoment, kt * du.twist);
         s.bendMoment = bendCreep.update(s.bendMoment, Vector3d(kb * du.bend));

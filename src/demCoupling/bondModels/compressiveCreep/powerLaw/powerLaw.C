@@ -23,7 +23,7 @@ namespace bondCompressiveCreepModels
 
 Foam::bondCompressiveCreepModels::powerLaw::powerLaw(const dictionary& dict)
 :
-    bondCompressiveCreepModel(dict, {"prefactor", "activationEnergy"}),
+    bondCompressiveCreepModel(dict, {"prefactor", "activationEnergy", "exponent"}),
     prefactor_
     (
         inputChecks::getPositiveOrDefault
@@ -40,8 +40,27 @@ Foam::bondCompressiveCreepModels::powerLaw::powerLaw(const dictionary& dict)
             dem::BondParameters().creepActivationEnergy,
             0
         )
+    ),
+    exponent_
+    (
+        inputChecks::getInInterval
+        (
+            dict, "exponent", dem::BondParameters().creepExponent, 1, 10, true, false
+        )
     )
-{}
+{
+    // The default A0 is in s^-1 Pa^-3: with another exponent its units would not match
+    if (exponent_ != dem::BondParameters().creepExponent && !dict.found("prefactor"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'exponent' in " << dict.name() << " is "
+            << inputChecks::shortForm(exponent_).c_str() << ", but 'prefactor' is not"
+            << " given: its default, 0.00554458 s^-1 Pa^-3, holds for exponent"
+            << " 3 only. Give prefactor in s^-1 Pa^-n for n = "
+            << inputChecks::shortForm(exponent_).c_str() << ", or leave exponent out."
+            << nl << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -51,6 +70,7 @@ void Foam::bondCompressiveCreepModels::powerLaw::set(dem::BondParameters& bonds)
     bonds.compressiveCreep = dem::BondCompressiveCreep::powerLaw;
     bonds.creepPrefactor = prefactor_;
     bonds.creepActivationEnergy = activationEnergy_;
+    bonds.creepExponent = exponent_;
 }
 
 
