@@ -38,7 +38,7 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import read_columns
+from darcydem.foamfiles import grain_files, read_columns, read_vtp_lines
 from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -83,6 +83,8 @@ RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
 RELAX_DRAG = 3e-4       # [N s/m]: m/c about 5 ms for a grain of 1.6e-6 kg
 PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
 
+# Write times of a settlement run: the bonds' .vtp at each gives the stress per mode
+SETTLE_WRITES = 20
 # Function objects' output, as written by wallStress, packingStatistics and bondCreep
 WALL_STRESS = "postProcessing/wallStress/0/wallStress.dat"
 PACKING = "postProcessing/packingStatistics/0/packing.dat"
@@ -102,6 +104,7 @@ class Run:
     only where the run wrote it)."""
 
     def __init__(self, case_dir, nu, ly):
+        self.case_dir = case_dir
         self.nu = nu
         self.ly = ly    # the periodic length in y [m]
         w = read_columns(os.path.join(case_dir, WALL_STRESS))
@@ -125,6 +128,32 @@ class Run:
             m = min(n, len(c["time"]))
             if m == n and np.array_equal(c["time"][:n], self.t):
                 self.creep = {k: v[:n] for k, v in c.items()}
+
+    def mode_stresses(self):
+        """Mean stress per deformation mode over the intact bonds at each
+        write time, from the bonds' .vtp (the peak stresses the strength
+        check compares, doc/EQUATIONS.md section 10): (times, {"normal":
+        |N|/A, "shear": |S|/A, "twist": |M_t| r_b/J, "bend": |M_b| r_b/I}),
+        J = 2 I = pi r_b^4 / 2; None when the run wrote no bonds."""
+        try:
+            files = grain_files(self.case_dir, "bonds")
+        except OSError:
+            return None
+        times, modes = [], {m: [] for m in ("normal", "shear", "twist", "bend")}
+        for t, path in files:
+            b = read_vtp_lines(path)
+            if len(b["lines"]) == 0 or "bendMoment" not in b:
+                continue
+            rb = b["patchRadius"]
+            area, inertia = np.pi * rb**2, np.pi * rb**4 / 4
+            times.append(t)
+            modes["normal"].append(np.mean(np.abs(b["normalForce"]) / area))
+            modes["shear"].append(np.mean(b["shearForce"] / area))
+            modes["twist"].append(np.mean(np.abs(b["twistMoment"]) * rb / (2 * inertia)))
+            modes["bend"].append(np.mean(b["bendMoment"] * rb / inertia))
+        if not times:
+            return None
+        return np.array(times), {m: np.array(v) for m, v in modes.items()}
 
     def mechanism_rates(self, width=None):
         """{mechanism: creep rate per intact bond} (normal, shear: m/s;
@@ -311,7 +340,7 @@ class SettlementStudy:
         c.set("constant/demProperties", "bonds/creep/contactViscosity", "%g" % nu)
         if creep_off is not None:
             c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
-        self.controls(c, self.s["settleTime"], 4)
+        self.controls(c, self.s["settleTime"], SETTLE_WRITES)
         seconds = self.timed_run(c, name, f"settle, contact viscosity {label(nu)}"
                                  + ("" if creep_off is None else f", {creep_off} creep off"),
                                  self.s["settleTime"])
@@ -332,6 +361,13 @@ class SettlementStudy:
             "meanPxxLoaded": float(np.mean(run.pxx[loaded])),
             "meanStrainRateLoaded": float(np.nanmean(rate[loaded])),
         }
+        stresses = run.mode_stresses()
+        if stresses is not None:
+            # mean stress per mode over the intact bonds, first and last write [Pa]
+            t, modes = stresses
+            self.results["runs"][name]["meanModeStress"] = {
+                "times": [float(t[0]), float(t[-1])],
+                **{m: [float(v[0]), float(v[-1])] for m, v in modes.items()}}
         if run.creep is not None:
             # creep per intact bond over the loaded rows (the paper's Figs 8a-c)
             rates = run.mechanism_rates()
@@ -354,6 +390,7 @@ class SettlementStudy:
             self.prepare()
         runs = [self.settle(nu) for nu in self.s["viscosities"]]
         variants = [self.settle(min(self.s["viscosities"]), m) for m in creep_off]
+        self.variants = variants
         self.results["lidStressExpected"] = LID_MASS * GRAVITY / (
             self.s["box"][0] * self.s["box"][1])
         self.plot(runs)
@@ -531,24 +568,38 @@ def plot_figures(runs, out_dir, box, results=None):
 
 
 def plot_creep_off(reference, variants, out_dir):
-    """settlementCreepOff.png: lid stress, density and broken bonds against
-    time with every creep mechanism on and with one off."""
+    """settlementCreepOff.png: lid stress, density, broken bonds and the
+    bonds' mean stress in each mode (normal, shear, twist, bend) against time
+    with every creep mechanism on and with one off."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(3, 1, figsize=(6.5, 8), sharex=True)
+    modes = (("normal", "|N|/A"), ("shear", "|S|/A"), ("twist", "|M_t| r_b/J"),
+             ("bend", "|M_b| r_b/I"))
+    fig, ax = plt.subplots(4, 2, figsize=(10, 10), sharex=True)
+    ax = ax.T.ravel()    # left column: lid, density, broken, new bonds; right: the modes
     for r in [reference] + list(variants):
         name = "all creep on" if getattr(r, "creep_off", None) is None else (
             f"{r.creep_off} creep off")
         ax[0].plot(r.t, r.pzz, lw=0.8, label=f"{name}, {label(r.nu)}")
         ax[1].plot(r.t, r.density)
         ax[2].plot(r.t, r.broken)
+        ax[3].plot(r.t, r.formed)
+        stresses = r.mode_stresses()
+        if stresses is not None:
+            t, values = stresses
+            for a, (mode, _) in zip(ax[4:], modes):
+                a.plot(t, values[mode], marker=".", lw=0.8)
     ax[0].set_ylabel("P_zz [Pa]")
     ax[0].legend(fontsize=7)
     ax[1].set_ylabel("density [kg/m³]")
     ax[2].set_ylabel("broken bonds")
-    ax[2].set_xlabel("time [s]")
+    ax[3].set_ylabel("new frozen bonds")
+    for a, (mode, formula) in zip(ax[4:], modes):
+        a.set_ylabel(f"mean {mode} stress\n{formula} [Pa]")
+    ax[3].set_xlabel("time [s]")
+    ax[-1].set_xlabel("time [s]")
     fig.tight_layout()
     fig.savefig(os.path.join(out_dir, "settlementCreepOff.png"), dpi=110)
     plt.close(fig)

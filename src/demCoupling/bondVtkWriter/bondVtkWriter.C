@@ -58,6 +58,7 @@ void Foam::bondVtkWriter::writeVtp
      || !sized(bonds.age, 1) || !sized(bonds.softening, 1)
      || !sized(bonds.creepNormal, 1) || !sized(bonds.creepShear, 1)
      || !sized(bonds.creepTwist, 1) || !sized(bonds.creepBend, 1)
+     || !sized(bonds.twistMoment, 1) || !sized(bonds.bendMoment, 3)
     )
     {
         FatalErrorInFunction
@@ -70,11 +71,14 @@ void Foam::bondVtkWriter::writeVtp
     points->SetNumberOfPoints(2*n);
     vtkNew<vtkCellArray> lines;
     vtkNew<vtkDoubleArray> patchRadius, normalForce, shearForce, age;
+    vtkNew<vtkDoubleArray> twistMoment, bendMoment;
     vtkNew<vtkDoubleArray> creepNormal, creepShear, creepTwist, creepBend;
     vtkNew<vtkIntArray> softening, first, second;
     named(patchRadius, "patchRadius", n);
     named(normalForce, "normalForce", n);
     named(shearForce, "shearForce", n);
+    named(twistMoment, "twistMoment", n);
+    named(bendMoment, "bendMoment", n);
     named(age, "age", n);
     named(softening, "softening", n);
     named(creepNormal, "creepNormal", n);
@@ -115,6 +119,9 @@ void Foam::bondVtkWriter::writeVtp
         patchRadius->SetValue(b, bonds.patchRadius[b]);
         normalForce->SetValue(b, bonds.normalForce[b]);
         shearForce->SetValue(b, std::sqrt(s[0]*s[0] + s[1]*s[1] + s[2]*s[2]));
+        const double* m = &bonds.bendMoment[3*b];
+        twistMoment->SetValue(b, bonds.twistMoment[b]);
+        bendMoment->SetValue(b, std::sqrt(m[0]*m[0] + m[1]*m[1] + m[2]*m[2]));
         age->SetValue(b, bonds.age[b]);
         softening->SetValue(b, bonds.softening[b]);
         creepNormal->SetValue(b, bonds.creepNormal[b]);
@@ -135,6 +142,8 @@ void Foam::bondVtkWriter::writeVtp
             static_cast<vtkDataArray*>(patchRadius.Get()),
             static_cast<vtkDataArray*>(normalForce.Get()),
             static_cast<vtkDataArray*>(shearForce.Get()),
+            static_cast<vtkDataArray*>(twistMoment.Get()),
+            static_cast<vtkDataArray*>(bendMoment.Get()),
             static_cast<vtkDataArray*>(age.Get()),
             static_cast<vtkDataArray*>(softening.Get()),
             static_cast<vtkDataArray*>(creepNormal.Get()),
