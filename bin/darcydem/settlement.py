@@ -331,22 +331,30 @@ class SettlementStudy:
         self.results.setdefault("wallSeconds", {})[name] = seconds
         return seconds
 
-    def settle(self, nu, creep_off=None):
+    def settle(self, nu, creep_off=None, strength_scale=None):
         """One settlement run; creep_off: the creep mechanism (shear, twist,
-        bend) switched off in it."""
-        name = "settle_nu%g" % nu + ("" if creep_off is None else "_no" + creep_off.title())
+        bend) switched off in it; strength_scale: the bonds' strength scale
+        during the settlement (the sample keeps the one it was prepared
+        with)."""
+        name = ("settle_nu%g" % nu + ("" if creep_off is None else "_no" + creep_off.title())
+                + ("" if strength_scale is None else "_strength%g" % strength_scale))
         c = self.stage(name, state_from=self.prepared)
         self.set_walls(c, moving=False)
         c.set("constant/demProperties", "bonds/creep/contactViscosity", "%g" % nu)
         if creep_off is not None:
             c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
+        if strength_scale is not None:
+            c.set("constant/demProperties", "bonds/strength/scale", "%g" % strength_scale)
         self.controls(c, self.s["settleTime"], SETTLE_WRITES)
         seconds = self.timed_run(c, name, f"settle, contact viscosity {label(nu)}"
-                                 + ("" if creep_off is None else f", {creep_off} creep off"),
+                                 + ("" if creep_off is None else f", {creep_off} creep off")
+                                 + ("" if strength_scale is None
+                                    else f", strength scale {strength_scale:g}"),
                                  self.s["settleTime"])
         steps = round(self.s["settleTime"] / TIME_STEP)
         run = Run(c.path, nu, self.s["box"][1])
         run.creep_off = creep_off
+        run.strength_scale = strength_scale
         rate, viscosity = run.creep_rates()
         loaded = run.loaded()
         self.results["runs"][name] = {
@@ -378,10 +386,13 @@ class SettlementStudy:
                 for m in ("normal", "shear", "twist", "bend")}
         return run
 
-    def run(self, creep_off=(), keep_sample=False):
+    def run(self, creep_off=(), keep_sample=False, weak_bonds=None):
         """The preparation (unless keep_sample and stages/relax has run), the
         settlement runs, and one more run at the lowest contact viscosity for
-        each mechanism in creep_off, with that creep mechanism off."""
+        each mechanism in creep_off, with that creep mechanism off; with
+        weak_bonds (a strength scale), the lowest contact viscosity again with
+        every creep on and with each mechanism of creep_off off, the bonds'
+        strength scaled by weak_bonds while settling."""
         relax = os.path.join(self.stages, "relax")
         if keep_sample and os.path.exists(relax) and Case.existing(relax).times():
             self.prepared = self.last_state(Case.existing(relax))
@@ -391,11 +402,17 @@ class SettlementStudy:
         runs = [self.settle(nu) for nu in self.s["viscosities"]]
         variants = [self.settle(min(self.s["viscosities"]), m) for m in creep_off]
         self.variants = variants
+        weak = []
+        if weak_bonds is not None:
+            weak = [self.settle(min(self.s["viscosities"]), m, weak_bonds)
+                    for m in [None] + list(creep_off)]
         self.results["lidStressExpected"] = LID_MASS * GRAVITY / (
             self.s["box"][0] * self.s["box"][1])
         self.plot(runs)
         if variants:
             plot_creep_off(runs[int(np.argmin([r.nu for r in runs]))], variants, self.dir)
+        if weak:
+            plot_creep_off(weak[0], weak[1:], self.dir, "settlementWeakBonds.png")
         self.write_results()
         return runs
 
@@ -567,7 +584,7 @@ def plot_figures(runs, out_dir, box, results=None):
         save(fig, "settlementScaling.png")
 
 
-def plot_creep_off(reference, variants, out_dir):
+def plot_creep_off(reference, variants, out_dir, name="settlementCreepOff.png"):
     """settlementCreepOff.png: lid stress, density, broken bonds and the
     bonds' mean stress in each mode (normal, shear, twist, bend) against time
     with every creep mechanism on and with one off."""
@@ -580,9 +597,11 @@ def plot_creep_off(reference, variants, out_dir):
     fig, ax = plt.subplots(4, 2, figsize=(10, 10), sharex=True)
     ax = ax.T.ravel()    # left column: lid, density, broken, new bonds; right: the modes
     for r in [reference] + list(variants):
-        name = "all creep on" if getattr(r, "creep_off", None) is None else (
+        what = "all creep on" if getattr(r, "creep_off", None) is None else (
             f"{r.creep_off} creep off")
-        ax[0].plot(r.t, r.pzz, lw=0.8, label=f"{name}, {label(r.nu)}")
+        if getattr(r, "strength_scale", None) is not None:
+            what += f", strength x {r.strength_scale:g}"
+        ax[0].plot(r.t, r.pzz, lw=0.8, label=f"{what}, {label(r.nu)}")
         ax[1].plot(r.t, r.density)
         ax[2].plot(r.t, r.broken)
         ax[3].plot(r.t, r.formed)
@@ -601,7 +620,7 @@ def plot_creep_off(reference, variants, out_dir):
     ax[3].set_xlabel("time [s]")
     ax[-1].set_xlabel("time [s]")
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "settlementCreepOff.png"), dpi=110)
+    fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
 
 
@@ -618,6 +637,10 @@ def main(argv):
                          " mechanism off (may be repeated)")
     ap.add_argument("--keep-sample", action="store_true",
                     help="start from the sample already in stages/relax")
+    ap.add_argument("--weak-bonds", type=float, metavar="SCALE",
+                    help="the lowest contact viscosity again, all creep on and each"
+                         " --creep-off mechanism off, with the bonds' strength scale SCALE"
+                         " while settling (settlementWeakBonds.png)")
     a = ap.parse_args(argv)
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size)
@@ -629,4 +652,6 @@ def main(argv):
         study.plot(study.existing_runs())
         study.write_results()
         return
-    study.run(creep_off=a.creep_off, keep_sample=a.keep_sample)
+    if a.weak_bonds is not None and not a.weak_bonds > 0:
+        sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
+    study.run(creep_off=a.creep_off, keep_sample=a.keep_sample, weak_bonds=a.weak_bonds)
