@@ -642,6 +642,8 @@ def main(argv):
                          " --creep-off mechanism off, with the bonds' strength scale SCALE"
                          " while settling (settlementWeakBonds.png)")
     a = ap.parse_args(argv)
+    if a.weak_bonds is not None and not a.weak_bonds > 0:
+        sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size)
     if a.plot_only:
@@ -652,6 +654,4 @@ def main(argv):
         study.plot(study.existing_runs())
         study.write_results()
         return
-    if a.weak_bonds is not None and not a.weak_bonds > 0:
-        sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
     study.run(creep_off=a.creep_off, keep_sample=a.keep_sample, weak_bonds=a.weak_bonds)

@@ -73,6 +73,19 @@ def test_missing_folder_is_one_line(script, folder, tmp_path):
         assert os.listdir(tmp_path / "empty") == []
 
 
+def test_settlement_weak_bonds_scale_must_be_positive(tmp_path):
+    """settlementStudy --weak-bonds 0 (a bond strength of zero): one line
+    naming the option, before any folder is looked at or made."""
+    shutil.copytree(os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement"),
+                    tmp_path / "study", ignore=shutil.ignore_patterns(
+                        "stages", "*.png", "results.json", "log.*"))
+    r = run(["settlementStudy", "study", "--weak-bonds", "0"], tmp_path)
+    print(r.stderr)
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+    assert r.stderr.strip() == "settlementStudy: --weak-bonds 0: the scale must be > 0"
+    assert not os.path.exists(tmp_path / "study" / "stages")
+
+
 def test_make_grains_missing_output_folder(tmp_path):
     start = time.monotonic()
     r = run(["makeGrains", *MAKE_GRAINS_ARGS, "--count", "10", "-o", "typo/grains"], tmp_path)
