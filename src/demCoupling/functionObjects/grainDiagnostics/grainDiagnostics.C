@@ -4,8 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainDiagnostics.H"
-#include "inputChecks.H"
-#include "demLibraryCall.H"
 #include "demCloud.H"
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
@@ -62,25 +60,119 @@ namespace functionObjects
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::grainDiagnostics::writeFileHeader(Ostream& os)
+Foam::wordList Foam::functionObjects::grainDiagnostics::columns
+(
+    const demCloud&
+) const
 {
-    writeHeader(os, "Grain diagnostics (doc/CASE-FORMAT.md, function objects)");
-    writeCommented(os, "time");
-    for
-    (
-        const char* column :
-        {
-            "shearStrain", "tau", "tauOverSigma0", "dilation", "topWall",
-            "pMin", "pMean", "pMax", "kineticEnergy", "contactsPerGrain",
-            "particleStepsPerS", "solidVolumeError"
-        }
-    )
+    return
     {
-        writeTabbed(os, column);
+        "shearStrain", "tau", "tauOverSigma0", "dilation", "topWall",
+        "pMin", "pMean", "pMax", "kineticEnergy", "contactsPerGrain",
+        "particleStepsPerS", "solidVolumeError"
+    };
+}
+
+
+void Foam::functionObjects::grainDiagnostics::writeRow
+(
+    Ostream& os,
+    const demCloud& cloud
+)
+{
+    const dem::System& dem = cloud.system();
+    const dem::GrainData g = cloud.grains();
+    const label n = g.radius.size();
+
+    // Sample height between the lowest lower wall and the top wall
+    scalar bottom = GREAT;
+    for (int w = 0; w < dem.wallCount(); ++w)
+    {
+        const dem::WallData wall = dem.wall(w);
+        if (wall.spec.side == dem::WallSpec::Side::lower)
+        {
+            bottom = min(bottom, wall.position);
+        }
     }
-    os << endl;
+
+    scalar shiftX = 0, kinetic = 0, grainVolume = 0;
+    label nPrescribed = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = g.radius[i];
+        const scalar m = g.mass[i];
+        scalar v2 = 0, w2 = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            v2 += sqr(g.velocity[3*i + d]);
+            w2 += sqr(g.angularVelocity[3*i + d]);
+        }
+        const scalar h =
+            g.coreHalfLength.empty() ? 0 : g.coreHalfLength[i];
+        if (h > 0)
+        {
+            kinetic += 0.5*m*v2 + capsuleRotationalEnergy(g, i);
+            grainVolume += g.volume[i];
+        }
+        else
+        {
+            kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
+            grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
+        }
+        if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
+        {
+            shiftX += g.displacement[3*i];
+            ++nPrescribed;
+        }
+    }
+
+    const scalar top = cloud.topWallPosition();
+    const scalar height =
+        (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
+    const scalar strain =
+        (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
+    const scalar t = dem.time();
+    const scalar impulse = dem.prescribedGrainImpulseX();
+    const scalar tau =
+        -(hasLast_ && t > lastTime_
+        ? (impulse - lastImpulse_)/(t - lastTime_)
+        : dem.prescribedGrainForceX())/cloud.boxArea();
+    lastTime_ = t;
+    lastImpulse_ = impulse;
+    hasLast_ = true;
+    const scalar sigma0 = cloud.topWallStress();
+
+    scalar pMin = 0, pMean = 0, pMax = 0;
+    if (mesh_.foundObject<volScalarField>("p"))
+    {
+        const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
+        pMin = min(p.primitiveField());
+        pMax = max(p.primitiveField());
+        pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
+    }
+
+    // Conservation of the deposit, before any porosity clamp
+    const dem::UniformGrid& grid = cloud.grid().grid();
+    std::vector<double> solid(grid.cellCount());
+    dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
+    scalar deposited = 0;
+    for (const double s : solid)
+    {
+        deposited += s;
+    }
+
+    os  << tab << strain << tab << tau << tab
+        << (sigma0 > 0 ? tau/sigma0 : 0) << tab
+        << (cloud.hasTopWall() ? (top - cloud.topWallInitialPosition())
+            /cloud.meanDiameter() : 0) << tab
+        << (cloud.hasTopWall() ? top : 0) << tab
+        << pMin << tab << pMean << tab << pMax << tab
+        << kinetic << tab
+        << (n ? 2.0*dem.contactCount()/n : 0) << tab
+        << cloud.particleStepsPerSecond() << tab
+        << (grainVolume > 0 ? deposited/grainVolume - 1 : 0);
 }
 
 
@@ -93,146 +185,18 @@ Foam::functionObjects::grainDiagnostics::grainDiagnostics
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, typeName, dict),
+    demTable
+    (
+        name,
+        runTime,
+        dict,
+        typeName,
+        "Grain diagnostics (doc/CASE-FORMAT.md, function objects)"
+    ),
     lastTime_(0),
     lastImpulse_(0),
     hasLast_(false)
-{
-    read(dict);
-    writeFileHeader(file());
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-bool Foam::functionObjects::grainDiagnostics::read(const dictionary& dict)
-{
-    // No entries of its own
-    inputChecks::checkKnownEntries
-    (
-        dict,
-        inputChecks::functionObjectEntryNames()
-    );
-    fvMeshFunctionObject::read(dict);
-    writeFile::read(dict);
-    return true;
-}
-
-
-bool Foam::functionObjects::grainDiagnostics::execute()
-{
-    return true;
-}
-
-
-bool Foam::functionObjects::grainDiagnostics::write()
-{
-    // Reads of the DEM library: whatever it throws ends as a FatalError
-    return demLibraryCall
-    (
-        "function object " + name(),
-        [&]
-        {
-            const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
-            const dem::System& dem = cloud.system();
-            const dem::GrainData g = cloud.grains();
-            const label n = g.radius.size();
-
-            // Sample height between the lowest lower wall and the top wall
-            scalar bottom = GREAT;
-            for (int w = 0; w < dem.wallCount(); ++w)
-            {
-                const dem::WallData wall = dem.wall(w);
-                if (wall.spec.side == dem::WallSpec::Side::lower)
-                {
-                    bottom = min(bottom, wall.position);
-                }
-            }
-
-            scalar shiftX = 0, kinetic = 0, grainVolume = 0;
-            label nPrescribed = 0;
-            for (label i = 0; i < n; ++i)
-            {
-                const scalar r = g.radius[i];
-                const scalar m = g.mass[i];
-                scalar v2 = 0, w2 = 0;
-                for (int d = 0; d < 3; ++d)
-                {
-                    v2 += sqr(g.velocity[3*i + d]);
-                    w2 += sqr(g.angularVelocity[3*i + d]);
-                }
-                const scalar h =
-                    g.coreHalfLength.empty() ? 0 : g.coreHalfLength[i];
-                if (h > 0)
-                {
-                    kinetic += 0.5*m*v2 + capsuleRotationalEnergy(g, i);
-                    grainVolume += g.volume[i];
-                }
-                else
-                {
-                    kinetic += 0.5*m*v2 + 0.5*(0.4*m*r*r)*w2;
-                    grainVolume += 4.0/3.0*constant::mathematical::pi*pow3(r);
-                }
-                if (g.flag[i] == dem::GrainFlag::prescribedVelocity)
-                {
-                    shiftX += g.displacement[3*i];
-                    ++nPrescribed;
-                }
-            }
-
-            const scalar top = cloud.topWallPosition();
-            const scalar height =
-                (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
-            const scalar strain =
-                (nPrescribed && height > 0) ? shiftX/nPrescribed/height : 0;
-            const scalar t = dem.time();
-            const scalar impulse = dem.prescribedGrainImpulseX();
-            const scalar tau =
-                -(hasLast_ && t > lastTime_
-                ? (impulse - lastImpulse_)/(t - lastTime_)
-                : dem.prescribedGrainForceX())/cloud.boxArea();
-            lastTime_ = t;
-            lastImpulse_ = impulse;
-            hasLast_ = true;
-            const scalar sigma0 = cloud.topWallStress();
-
-            scalar pMin = 0, pMean = 0, pMax = 0;
-            if (mesh_.foundObject<volScalarField>("p"))
-            {
-                const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
-                pMin = min(p.primitiveField());
-                pMax = max(p.primitiveField());
-                pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
-            }
-
-            // Conservation of the deposit, before any porosity clamp
-            const dem::UniformGrid& grid = cloud.grid().grid();
-            std::vector<double> solid(grid.cellCount());
-            dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
-            scalar deposited = 0;
-            for (const double s : solid)
-            {
-                deposited += s;
-            }
-
-            Ostream& os = file();
-            writeCurrentTime(os);
-            os  << tab << strain << tab << tau << tab
-                << (sigma0 > 0 ? tau/sigma0 : 0) << tab
-                << (cloud.hasTopWall() ? (top - cloud.topWallInitialPosition())
-                    /cloud.meanDiameter() : 0) << tab
-                << (cloud.hasTopWall() ? top : 0) << tab
-                << pMin << tab << pMean << tab << pMax << tab
-                << kinetic << tab
-                << (n ? 2.0*dem.contactCount()/n : 0) << tab
-                << cloud.particleStepsPerSecond() << tab
-                << (grainVolume > 0 ? deposited/grainVolume - 1 : 0) << endl;
-
-            return true;
-        }
-    );
-}
+{}
 
 
 // ************************************************************************* //

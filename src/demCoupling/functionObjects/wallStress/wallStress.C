@@ -4,8 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallStress.H"
-#include "inputChecks.H"
-#include "demLibraryCall.H"
 #include "demCloud.H"
 #include "wallEnclosure.H"
 #include "addToRunTimeSelectionTable.H"
@@ -22,25 +20,40 @@ namespace functionObjects
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::wallStress::writeFileHeader
+Foam::wordList Foam::functionObjects::wallStress::columns
 (
-    Ostream& os,
-    const wordList& walls
-)
+    const demCloud& cloud
+) const
 {
-    writeHeader(os, "Wall stresses (doc/CASE-FORMAT.md, function objects)");
-    writeCommented(os, "time");
-    for (const word& wall : walls)
+    // The walls are known once the grains are (demCloud's demWalls)
+    wordList names;
+    for (const word& wall : cloud.walls().names())
     {
         for (const char* column : {"_position", "_force", "_stress"})
         {
-            writeTabbed(os, wall + column);
+            names.append(word(wall + column));
         }
     }
-    os << endl;
-    headerWritten_ = true;
+    return names;
+}
+
+
+void Foam::functionObjects::wallStress::writeRow
+(
+    Ostream& os,
+    const demCloud& cloud
+)
+{
+    const wallEnclosure box(cloud.system(), cloud.grid().grid());
+    const label nWalls = box.walls().size();
+    for (label w = 0; w < nWalls; ++w)
+    {
+        const dem::WallData& wall = box.walls()[w];
+        os  << tab << wall.position << tab << wall.grainForce
+            << tab << wall.grainForce/box.area(w);
+    }
 }
 
 
@@ -53,65 +66,15 @@ Foam::functionObjects::wallStress::wallStress
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, typeName, dict),
-    headerWritten_(false)
-{
-    read(dict);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-bool Foam::functionObjects::wallStress::read(const dictionary& dict)
-{
-    // No entries of its own
-    inputChecks::checkKnownEntries
+    demTable
     (
+        name,
+        runTime,
         dict,
-        inputChecks::functionObjectEntryNames()
-    );
-    fvMeshFunctionObject::read(dict);
-    writeFile::read(dict);
-    return true;
-}
-
-
-bool Foam::functionObjects::wallStress::execute()
-{
-    return true;
-}
-
-
-bool Foam::functionObjects::wallStress::write()
-{
-    // Reads of the DEM library: whatever it throws ends as a FatalError
-    return demLibraryCall
-    (
-        "function object " + name(),
-        [&]
-        {
-            const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
-            const wallEnclosure box(cloud.system(), cloud.grid().grid());
-            const label nWalls = box.walls().size();
-
-            Ostream& os = file();
-            if (!headerWritten_)
-            {
-                writeFileHeader(os, cloud.walls().names());
-            }
-            writeCurrentTime(os);
-            for (label w = 0; w < nWalls; ++w)
-            {
-                const dem::WallData& wall = box.walls()[w];
-                os  << tab << wall.position << tab << wall.grainForce
-                    << tab << wall.grainForce/box.area(w);
-            }
-            os << endl;
-            return true;
-        }
-    );
-}
+        typeName,
+        "Wall stresses (doc/CASE-FORMAT.md, function objects)"
+    )
+{}
 
 
 // ************************************************************************* //
