@@ -125,8 +125,7 @@ class Run:
         self.creep = None
         if os.path.exists(path):
             c = read_columns(path)
-            m = min(n, len(c["time"]))
-            if m == n and np.array_equal(c["time"][:n], self.t):
+            if np.array_equal(c["time"][:n], self.t):    # rows in step with packing.dat
                 self.creep = {k: v[:n] for k, v in c.items()}
 
     def mode_stresses(self):
@@ -134,7 +133,13 @@ class Run:
         write time, from the bonds' .vtp (the peak stresses the strength
         check compares, doc/EQUATIONS.md section 10): (times, {"normal":
         |N|/A, "shear": |S|/A, "twist": |M_t| r_b/J, "bend": |M_b| r_b/I}),
-        J = 2 I = pi r_b^4 / 2; None when the run wrote no bonds."""
+        J = 2 I = pi r_b^4 / 2; None when the run wrote no bonds. Read once
+        (the results and the figures both ask)."""
+        if not hasattr(self, "_mode_stresses"):
+            self._mode_stresses = self._read_mode_stresses()
+        return self._mode_stresses
+
+    def _read_mode_stresses(self):
         try:
             files = grain_files(self.case_dir, "bonds")
         except OSError:

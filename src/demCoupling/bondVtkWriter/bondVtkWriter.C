@@ -31,6 +31,12 @@ vtkNew<Array>& named(vtkNew<Array>& array, const char* name, vtkIdType n)
     return array;
 }
 
+//- Length of the 3-vector at v
+double magnitude(const double* v)
+{
+    return std::sqrt(v[0]*v[0] + v[1]*v[1] + v[2]*v[2]);
+}
+
 } // End anonymous namespace
 
 
@@ -115,13 +121,11 @@ void Foam::bondVtkWriter::writeVtp
         const vtkIdType ends[2] = {2*b, 2*b + 1};
         lines->InsertNextCell(2, ends);
 
-        const double* s = &bonds.shearForce[3*b];
         patchRadius->SetValue(b, bonds.patchRadius[b]);
         normalForce->SetValue(b, bonds.normalForce[b]);
-        shearForce->SetValue(b, std::sqrt(s[0]*s[0] + s[1]*s[1] + s[2]*s[2]));
-        const double* m = &bonds.bendMoment[3*b];
+        shearForce->SetValue(b, magnitude(&bonds.shearForce[3*b]));
         twistMoment->SetValue(b, bonds.twistMoment[b]);
-        bendMoment->SetValue(b, std::sqrt(m[0]*m[0] + m[1]*m[1] + m[2]*m[2]));
+        bendMoment->SetValue(b, magnitude(&bonds.bendMoment[3*b]));
         age->SetValue(b, bonds.age[b]);
         softening->SetValue(b, bonds.softening[b]);
         creepNormal->SetValue(b, bonds.creepNormal[b]);

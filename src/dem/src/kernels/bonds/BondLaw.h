@@ -73,6 +73,7 @@ struct BondLaw
     IceStrength strength;
     Sintering sintering;
     double normalDashpot = 0.0, shearDashpot = 0.0; //!< 2 zeta_n, 2 zeta_s sqrt(k_se/k_ne)
+    bool creeps = false; //!< any creep mechanism on: the creep displacements are summed
 
     //- Relaxation times of grain-boundary creep: tau_shear = tau_twist = nu_s / (k_se/k_ne E),
     //- tau_bend = nu_s / E (the viscosity over the patch's modulus in that mode).
@@ -91,6 +92,9 @@ struct BondLaw
         law.compressiveCreep = PowerLawCreep::make(parameters, timeStep);
         law.strength = IceStrength::make(parameters);
         law.sintering = Sintering::make(parameters, timeStep);
+        law.creeps =
+            (maxwell && (parameters.shearCreep || parameters.twistCreep || parameters.bendCreep)) ||
+            law.compressiveCreep.on;
         law.normalDashpot = 2.0 * parameters.normalDampingRatio;
         law.shearDashpot =
             2.0 * parameters.shearDampingRatio * std::sqrt(parameters.shearToNormalStiffness);
@@ -165,7 +169,9 @@ private:
         s.shearForce = shearCreep.update(s.shearForce, Vector3d(ks * du.shear));
         s.twistMoment = twistCreep.update(s.twistMoment, kt * du.twist);
         s.bendMoment = bendCreep.update(s.bendMoment, Vector3d(kb * du.bend));
-        if (kn > 0.0) // a patch shrunk to nothing (brokenFraction 0) has no stiffness
+        // Without creep every difference is exactly zero: not computed. A patch shrunk to
+        // nothing (brokenFraction 0) has no stiffness and creeps no more.
+        if (creeps && kn > 0.0)
         {
             s.creepNormal += std::fabs(elasticN - s.normalForce) / kn;
             s.creepShear += (elasticS - s.shearForce).norm() / ks;
