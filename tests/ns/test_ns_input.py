@@ -1,6 +1,6 @@
 """nsDemFoam's input and restart: -help says what it solves; a fluid force
-that is not a drag law, a missing grains dictionary and a non-positive
-viscosity stop before the first step, naming the file, the entry and the
+that is not a drag law, a missing grains dictionary, an unknown
+depositAtWalls and a non-positive viscosity stop before the first step, naming the file, the entry and the
 valid choices; a drag law used outside the porosity of its data says so once
 in the log (and the run goes on); a restart from a written time is exact. Real binary on tests/cases/fixedBed (a frozen bed in a
 column); the mistyped entries of nsDemProperties are in
@@ -42,6 +42,13 @@ def test_missing_grains_dictionary_names_the_file_and_the_laws():
     msg = failing("ns_no_grains", lambda c: c.remove(NS, "grains"))
     assert "Dictionary 'grains' not found" in msg and "nsDemProperties" in msg
     assert all(law in msg for law in DRAG_LAWS)
+
+
+def test_unknown_deposit_at_walls_lists_the_choices():
+    msg = failing("ns_bad_wall_deposit",
+                  lambda c: c.set(NS, "grains/depositAtWalls", "mirror"))
+    assert "mirror" in msg and "depositAtWalls" in msg and "nsDemProperties" in msg
+    assert "inside" in msg and "across" in msg
 
 
 def test_non_positive_viscosity_is_refused():

@@ -9,6 +9,8 @@
 //    exp(-beta t/rho_s) (the exact solution of m dv/dt = V beta (u - v));
 //  - the grains' reaction deposited on the cells sums to minus their fluid forces (momentum
 //    conservation), next to walls and across periodic sides;
+//  - a wall inside the grid keeps a grain's deposit and fluid on its side: nothing is deposited
+//    into cells beyond the wall, and the force is the cells' on the grain's side;
 //  - the same with capsules mixed among the spheres (their true volume pi r^2 L + 4/3 pi r^3,
 //    spread along the axis: kernels/VolumeSpread.h, its error in VolumeSpreadTest.cpp).
 #include "TestSupport.h"
@@ -283,6 +285,95 @@ TEST_P(Coupling, UniformPressureGradientAndBuoyancy)
         s.step(1);
         EXPECT_NEAR(s.grains().force[2], out.mass[0] * p.gravity[2], 1e-12);
     }
+}
+
+// Walls inside the grid (a distributor above the inlet, a lid below the mesh's top): each
+// deposit point is kept half a cell inside the walls, so no grain volume reaches cells beyond
+// the wall it sits on (doc/EQUATIONS.md 6). A lower wall on a cell face (z = 2 dz) with a
+// grain 0.2 dz above it: without this, 0.3 of its volume would be in the layer below the wall;
+// with it the grain's layer holds all (the mirror the grid applies at its own sides). An
+// upper wall inside a cell (z = 4.4 dz) with a grain 0.3 dz below it: nothing above the wall's
+// cell. A force density that is f_in on the grains' side and 1000 f_in beyond: the grains feel
+// V f_in, and the reaction (per cell volume) is deposited only on their side and sums to minus
+// their forces.
+TEST_P(Coupling, WallsInsideTheGridKeepDepositAndFluidOnTheGrainsSide)
+{
+    dem::Parameters p = parameters();
+    p.boxUpper = {box, box};
+    p.gravity = {0, 0, 0};
+    const dem::UniformGrid g = grid();
+    const double dz = g.spacing[2];
+    dem::System s(p);
+    dem::WallSpec floor, lid;
+    floor.position = 2.0 * dz;
+    lid.side = dem::WallSpec::Side::upper;
+    lid.position = 4.4 * dz;
+    s.addWall(floor);
+    s.addWall(lid);
+    dem::GrainInit low, high;
+    low.radius = high.radius = 0.004;
+    low.position = {0.5 * g.spacing[0], 0.5 * g.spacing[1], 2.2 * dz};
+    high.position = {2.5 * g.spacing[0], 1.5 * g.spacing[1], 4.1 * dz};
+    s.addGrains({low, high});
+    const long layer = long(g.n[0]) * g.n[1];
+    std::vector<double> solid(g.cellCount()), porosity(g.cellCount());
+    s.deposit(g, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+    const double volume = sphereVolume(low.radius);
+    auto layerSum = [&](const std::vector<double>& v, int k)
+    {
+        double sum = 0;
+        for (long c = k * layer; c < (k + 1) * layer; ++c)
+            sum += v[c];
+        return sum;
+    };
+    std::printf("  solid per z layer / V:");
+    for (int k = 0; k < g.n[2]; ++k)
+        std::printf(" %.6f", layerSum(solid, k) / volume);
+    std::printf("\n");
+    EXPECT_EQ(layerSum(solid, 0) + layerSum(solid, 1), 0.0); // beyond the floor
+    EXPECT_NEAR(layerSum(solid, 2) / volume, 1.0, 1e-14);    // the low grain, all of it
+    EXPECT_EQ(layerSum(solid, 5), 0.0);                      // beyond the lid's cell
+    // The high grain's point held at 4.4 dz - dz/2 = 3.9 dz: 0.6 of it in layer 3, 0.4 in 4
+    EXPECT_NEAR(layerSum(solid, 3) / volume, 0.6, 1e-12);
+    EXPECT_NEAR(layerSum(solid, 4) / volume, 0.4, 1e-12);
+
+    const double fIn = 2e3;
+    std::vector<double> field(3 * g.cellCount(), 0.0);
+    for (long c = 0; c < long(g.cellCount()); ++c)
+    {
+        const int k = int(c / layer);
+        field[3 * c + 2] = (k >= 2 && k <= 4 ? 1.0 : 1e3) * fIn;
+    }
+    dem::FluidFields fluid;
+    fluid.forceDensity = field.data();
+    s.setFluid(g, fluid);
+    const dem::GrainData out = s.grains();
+    std::vector<double> reaction(3 * g.cellCount());
+    s.depositFluidReaction(g, reaction.data());
+    double reactionBeyond = 0, reactionSum = 0;
+    for (long c = 0; c < long(g.cellCount()); ++c)
+    {
+        const int k = int(c / layer);
+        reactionSum += reaction[3 * c + 2];
+        if (k < 2 || k > 4)
+            reactionBeyond += std::fabs(reaction[3 * c + 2]);
+    }
+    for (int i = 0; i < 2; ++i)
+    {
+        std::printf("  grain %d: fluid force / (V f_in) = %.15f\n", i,
+                    out.fluidForce[3 * i + 2] / (volume * fIn));
+        EXPECT_NEAR(out.fluidForce[3 * i + 2] / (volume * fIn), 1.0, 1e-13);
+    }
+    EXPECT_EQ(reactionBeyond, 0.0);
+    EXPECT_NEAR(reactionSum * g.cellVolume() / (-2.0 * volume * fIn), 1.0, 1e-13);
+
+    // Asked to cross the walls (UniformGrid::depositInsideWalls false): the plain trilinear
+    // weights, 0.3 of the low grain below the floor's face
+    dem::UniformGrid across = g;
+    across.depositInsideWalls = false;
+    s.deposit(across, 0.0, porosity.data(), nullptr, nullptr, solid.data());
+    EXPECT_NEAR(layerSum(solid, 1) / volume, 0.3, 1e-12);
+    EXPECT_NEAR(layerSum(solid, 2) / volume, 0.7, 1e-12);
 }
 
 // The fields are read where a grain is when they are handed over (setFluid) and held over the

@@ -35,6 +35,7 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
     ),
     mesh_(mesh),
     grid_(mesh),
+    depositInsideWalls_(true),
     settings_(mesh, grid_.grid()),
     writer_(mesh.time(), settings_),
     system_(),
@@ -193,6 +194,14 @@ Foam::label Foam::demCloud::evolve(const scalar dtFluid)
 }
 
 
+dem::UniformGrid Foam::demCloud::couplingGrid() const
+{
+    dem::UniformGrid g = grid_.grid();
+    g.depositInsideWalls = depositInsideWalls_;
+    return g;
+}
+
+
 void Foam::demCloud::deposit
 (
     const scalar dtFluid,
@@ -211,7 +220,7 @@ void Foam::demCloud::deposit
         {
             system_->deposit
             (
-                grid_.grid(), dtFluid, phi.data(), phiPred.data(), u.data()
+                couplingGrid(), dtFluid, phi.data(), phiPred.data(), u.data()
             );
         }
     );
@@ -270,7 +279,7 @@ void Foam::demCloud::handOver
     demLibraryCall
     (
         "handing the fluid force to the grains",
-        [&]{ system_->setFluid(grid_.grid(), fluid); }
+        [&]{ system_->setFluid(couplingGrid(), fluid); }
     );
 }
 
@@ -281,7 +290,7 @@ void Foam::demCloud::depositReaction(volVectorField& reaction) const
     demLibraryCall
     (
         "depositing the grains' reaction on the fluid",
-        [&]{ system_->depositFluidReaction(grid_.grid(), r.data()); }
+        [&]{ system_->depositFluidReaction(couplingGrid(), r.data()); }
     );
     grid_.toMesh(r, reaction.primitiveFieldRef());
     reaction.correctBoundaryConditions();

@@ -19,15 +19,25 @@ Foam::grainCoupling::porosityRateFormNames
 });
 
 
+const Foam::Enum<Foam::grainCoupling::wallDeposit>
+Foam::grainCoupling::wallDepositNames
+({
+    { wallDeposit::inside, "inside" },
+    { wallDeposit::across, "across" },
+});
+
+
 const Foam::wordList Foam::grainCoupling::entryNames
 ({
-    "porosityMin", "porosityMax", "topPressure", "porosityRate", "fluidForce"
+    "porosityMin", "porosityMax", "topPressure", "porosityRate",
+    "depositAtWalls", "fluidForce"
 });
 
 
 const Foam::wordList Foam::grainCoupling::momentumEntryNames
 ({
-    "porosityMin", "porosityMax", "porosityRate", "fluidForce"
+    "porosityMin", "porosityMax", "porosityRate", "depositAtWalls",
+    "fluidForce"
 });
 
 
@@ -101,13 +111,26 @@ Foam::grainCoupling::grainCoupling
     rateForm_
     (
         coupled()
-      ? porosityRateFormNames.getOrDefault
+      ? inputChecks::getChoiceOrDefault
         (
-            "porosityRate",
             dict,
+            "porosityRate",
+            porosityRateFormNames,
             porosityRateForm::predictedPosition
         )
       : porosityRateForm::exactDifference
+    ),
+    wallDeposit_
+    (
+        coupled()
+      ? inputChecks::getChoiceOrDefault
+        (
+            dict,
+            "depositAtWalls",
+            wallDepositNames,
+            wallDeposit::inside
+        )
+      : wallDeposit::inside
     ),
     porosity_(porosity),
     porosityRate_(porosityRate),
@@ -163,8 +186,10 @@ Foam::grainCoupling::grainCoupling
                 << nl << exit(FatalIOError);
         }
         Info<< "    porosity rate: " << porosityRateFormNames[rateForm_]
+            << nl << "    deposit at walls: " << wallDepositNames[wallDeposit_]
             << endl;
     }
+    cloud_.keepDepositInsideWalls(wallDeposit_ == wallDeposit::inside);
 
     // The grains of the start time define the porosity there (also on a
     // restart: the deposit is deterministic)

@@ -2,7 +2,8 @@
 // The uniform Cartesian grid on which grains are deposited and the fluid pressure gradient is
 // given (the fluid mesh: OpenFOAM blockMesh hex cells). Cell (i, j, k) has index
 // i + n[0] * (j + n[1] * k) (x fastest, blockMesh order) and centre origin + (i + 1/2) spacing.
-// Non-periodic sides are walls: weights falling outside are mirrored back into the grid.
+// Non-periodic sides are walls: weights falling outside are mirrored back into the grid; by
+// default the engine also keeps each deposit point half a cell inside the grains' own walls.
 // A decomposed mesh passes its own block (origin, n) and later halo sides; nothing here assumes
 // the grid covers the whole DEM box.
 #pragma once
@@ -19,6 +20,10 @@ struct UniformGrid
     std::array<double, 3> spacing{1.0, 1.0, 1.0}; //!< cell size [m]
     std::array<int, 3> n{1, 1, 1};                //!< cells per direction
     std::array<bool, 3> periodic{true, true, false};
+    //- true: every deposit and interpolation point is kept half a cell inside the grains' walls,
+    //- so no grain volume reaches cells beyond the wall it rests on (doc/EQUATIONS.md 6);
+    //- false: the weights cross walls inside the grid (only the grid's own sides mirror)
+    bool depositInsideWalls = true;
 
     std::size_t cellCount() const { return std::size_t(n[0]) * n[1] * n[2]; }
     double cellVolume() const { return spacing[0] * spacing[1] * spacing[2]; }

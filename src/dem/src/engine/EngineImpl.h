@@ -177,6 +177,8 @@ public:
     //- Each grain's fluid load (fFluidLoad) from the fields setFluid copied, at its position
     //- now: by setFluid, and again for grains added or imported while a fluid is set.
     void storeFluidLoads();
+    //- grid checked, with the points kept half a cell inside the walls (EngineIo.h)
+    GridView fluidGridView(const UniformGrid& grid, const char* caller) const;
     //- Points a copy of fluid_ at the grains' fluid loads (kernels get raw pointers).
     void pointFluidAt(FluidLoadView& fluid) const;
     //- The fluid force per grain as the next step applies it (read-back and reaction).

@@ -331,12 +331,39 @@ inline GridView gridView(const UniformGrid& grid, const char* caller)
     return v;
 }
 
+//- The grid as the coupling kernels see it: points kept half a cell inside the walls, so that
+//- no grain deposits its volume into, or reads its fluid from, cells beyond the wall it rests
+//- on (a distributor inside the fluid, a loading plate below the mesh's top). Without this a
+//- bed's layer on a wall inside the fluid averages its porosity with the clear fluid beyond
+//- and gets too little drag (doc/EQUATIONS.md 6). Walls closer than a cell: their middle.
+//- Unless the grid asks for the weights to cross the walls (UniformGrid::depositInsideWalls).
+template <class Exec>
+GridView EngineImpl<Exec>::fluidGridView(const UniformGrid& grid, const char* caller) const
+{
+    GridView v = gridView(grid, caller);
+    if (!grid.depositInsideWalls)
+        return v;
+    for (const WallState& w : walls_)
+    {
+        const int a = w.spec.axis;
+        const double inside = 0.5 * v.spacing[a];
+        if (w.spec.side == WallSpec::Side::lower)
+            v.pointLower[a] = std::max(v.pointLower[a], w.position + inside);
+        else
+            v.pointUpper[a] = std::min(v.pointUpper[a], w.position - inside);
+    }
+    for (int d = 0; d < 3; ++d)
+        if (v.pointLower[d] > v.pointUpper[d])
+            v.pointLower[d] = v.pointUpper[d] = 0.5 * (v.pointLower[d] + v.pointUpper[d]);
+    return v;
+}
+
 template <class Exec>
 void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                                double* predictedPorosity, double* meanVelocity,
                                double* solidVolume) const
 {
-    const GridView g = gridView(grid, "deposit");
+    const GridView g = fluidGridView(grid, "deposit");
     const int n = grains_.size();
     const long cells = g.cellCount();
     EngineImpl& e = self();
@@ -383,7 +410,7 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
 template <class Exec>
 void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const FluidFields& fluid)
 {
-    const GridView g = gridView(grid, "setFluid");
+    const GridView g = fluidGridView(grid, "setFluid");
     if (!fluid.forceDensity)
         throw Error("setFluid: forceDensity is null");
     if (fluid.dragCoefficient && !fluid.velocity)
@@ -451,7 +478,7 @@ GrainFluidForce EngineImpl<Exec>::grainFluidForce() const
 template <class Exec>
 void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* reaction) const
 {
-    const GridView g = gridView(grid, "depositFluidReaction");
+    const GridView g = fluidGridView(grid, "depositFluidReaction");
     const long values = 3 * g.cellCount();
     Vec<double>& out = reactionScratch_;
     out.resize(values);

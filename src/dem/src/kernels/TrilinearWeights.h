@@ -2,7 +2,10 @@
 // Trilinear weights of a point to the 8 surrounding cell centres of a uniform grid
 // (doc/EQUATIONS.md 6): s = prod_d (1 - |x_d - x_c,d| / dx_d). Indices outside the grid wrap across
 // periodic sides and are mirrored at the others (a wall between the last centre and the
-// boundary), so the 8 weights always sum to 1 and deposited volume is conserved.
+// boundary), so the 8 weights always sum to 1 and deposited volume is conserved. A point is
+// first kept at least half a cell inside the grains' walls (GridView::pointLower/Upper): a
+// grain's volume never reaches cells beyond the wall that holds it, wherever the wall lies in
+// the grid (at a cell face this is the same mirror as at the grid's own sides).
 #pragma once
 
 #include "backends/HostDevice.h"
@@ -22,6 +25,10 @@ struct GridView
     double spacing[3] = {1, 1, 1};
     int n[3] = {1, 1, 1};
     bool periodic[3] = {true, true, false};
+    //- The range a deposit or interpolation point is kept in per direction: half a cell
+    //- inside the grains' walls (EngineImpl::fluidGridView); unbounded without walls.
+    double pointLower[3] = {-1e300, -1e300, -1e300};
+    double pointUpper[3] = {1e300, 1e300, 1e300};
 
     DEM_HD long cellCount() const { return long(n[0]) * n[1] * n[2]; }
     DEM_HD double cellVolume() const { return spacing[0] * spacing[1] * spacing[2]; }
@@ -54,7 +61,10 @@ DEM_HD TrilinearStencil trilinearStencil(const GridView& grid, const Vector3d& x
     double w[3][2];
     for (int d = 0; d < 3; ++d)
     {
-        const double s = (x[d] - grid.origin[d]) / grid.spacing[d] - 0.5;
+        const double xd = x[d] < grid.pointLower[d]
+                              ? grid.pointLower[d]
+                              : (x[d] > grid.pointUpper[d] ? grid.pointUpper[d] : x[d]);
+        const double s = (xd - grid.origin[d]) / grid.spacing[d] - 0.5;
         const double base = std::floor(s);
         const double t = s - base;
         index[d][0] = grid.mapIndex(int(base), d);
