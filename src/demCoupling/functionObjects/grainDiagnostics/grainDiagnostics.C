@@ -154,7 +154,7 @@ void Foam::functionObjects::grainDiagnostics::writeRow
     }
 
     // Conservation of the deposit, before any porosity clamp
-    const dem::UniformGrid& grid = cloud.grid().grid();
+    const dem::UniformGrid grid = cloud.couplingGrid();
     std::vector<double> solid(grid.cellCount());
     dem.deposit(grid, 0, nullptr, nullptr, nullptr, solid.data());
     scalar deposited = 0;
