@@ -496,6 +496,39 @@ TEST(BondLaw, SofteningSequence)
     EXPECT_LT(relative(s.normalForce, N - kne * M_PI * r * r * v * dt), 1e-12);
 }
 
+TEST(BondLaw, BranchAtZeroBreaksWithoutABrokenFraction)
+{
+    // brokenFraction 0: the bond breaks where the softening branch reaches zero force, x =
+    // delta/delta_1 = 1 + 1/rho = 3 for rho = 0.5, and not one step later or earlier (a patch
+    // shrunk to r_b = 0 used to stay on as an intact bond that carries nothing).
+    BondParameters p = elastic();
+    p.strength = dem::BondStrength::constant;
+    p.tensileStrength = 1e6;
+    p.shearStrength = 1e6;
+    p.softeningRatio = 0.5;
+    p.brokenFraction = 0.0;
+    const BondLaw law = BondLaw::make(p, dt);
+    const BondGeometry g = touching();
+    const double delta1 = 1e6 / kne, v = delta1 / (400.5 * dt); // no step lands on x = 3
+    BondState s = fresh();
+    double lastX = 0, x = 0;
+    for (int i = 1; i <= 2000 && !s.broken; ++i)
+    {
+        law.advance(s, g, driven(Vector3d(v, 0, 0), Vector3d::Zero()));
+        x = v * i * dt / delta1;
+        if (!s.broken)
+        {
+            lastX = x;
+            EXPECT_GT(s.patchRadius, 0.0);
+        }
+    }
+    std::printf("  broken at x = %.6f, intact at x = %.6f (the branch is zero at x = 3)\n", x,
+                lastX);
+    EXPECT_TRUE(s.broken);
+    EXPECT_GT(x, 3.0);
+    EXPECT_LT(lastX, 3.0);
+}
+
 TEST(BondLaw, SinteringAtConstantLoad)
 {
     // Pressure sintering under a constant compressive force F:

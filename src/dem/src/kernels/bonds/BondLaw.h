@@ -169,8 +169,9 @@ private:
         s.shearForce = shearCreep.update(s.shearForce, Vector3d(ks * du.shear));
         s.twistMoment = twistCreep.update(s.twistMoment, kt * du.twist);
         s.bendMoment = bendCreep.update(s.bendMoment, Vector3d(kb * du.bend));
-        // Without creep every difference is exactly zero: not computed. A patch shrunk to
-        // nothing (brokenFraction 0) has no stiffness and creeps no more.
+        // Without creep every difference is exactly zero: not computed. (A patch never
+        // shrinks to nothing: the strength check below breaks it first; kn > 0 guards the
+        // division all the same.)
         if (creeps && kn > 0.0)
         {
             s.creepNormal += std::fabs(elasticN - s.normalForce) / kn;
@@ -201,7 +202,11 @@ private:
             return true;
         s.softening = true;
         const double fraction = strength.areaFraction(x);
-        const double target = fraction > 0.0 ? s.onsetRadius * std::sqrt(fraction) : 0.0;
+        // Broken where the branch reaches zero, or below brokenFraction Rbar (with 0, a patch
+        // shrunk to nothing would otherwise stay on as an intact bond of zero size)
+        if (!(fraction > 0.0))
+            return false;
+        const double target = s.onsetRadius * std::sqrt(fraction);
         if (!(target >= strength.brokenFraction * meanRadius))
             return false;
         if (target < s.patchRadius)
