@@ -148,8 +148,8 @@ void Foam::functionObjects::grainDiagnostics::writeRow
     if (mesh_.foundObject<volScalarField>("p"))
     {
         const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
-        pMin = min(p.primitiveField());
-        pMax = max(p.primitiveField());
+        pMin = gMin(p.primitiveField());
+        pMax = gMax(p.primitiveField());
         pMean = gSum(p.primitiveField()*mesh_.V())/gSum(mesh_.V());
     }
 
