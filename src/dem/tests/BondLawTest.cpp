@@ -39,6 +39,19 @@ BondParameters elastic()
     return p;
 }
 
+//- Strengths 1 MPa in tension and shear, softening ratio rho = 0.5 (the branch at zero at
+//- x = delta/delta_1 = 3), broken below brokenFraction Rbar.
+BondParameters softening(double brokenFraction)
+{
+    BondParameters p = elastic();
+    p.strength = dem::BondStrength::constant;
+    p.tensileStrength = 1e6;
+    p.shearStrength = 1e6;
+    p.softeningRatio = 0.5;
+    p.brokenFraction = brokenFraction;
+    return p;
+}
+
 BondGeometry touching()
 {
     return bondGeometry(Vector3d(2.0 * R, 0, 0), Vector3d::Zero(), Vector3d::Zero(), R, R);
@@ -441,13 +454,7 @@ TEST(BondLaw, SofteningSequence)
     // = 1 the patch follows r_b = r_0 sqrt((1 - rho (x - 1)) / x) and the force the branch
     // sigma_t A_0 (1 - rho (x - 1)), to zero at x = 3; broken once r_b < 0.05 Rbar. delta is
     // the extension v t exactly, so both are met to round-off (1e-9).
-    BondParameters p = elastic();
-    p.strength = dem::BondStrength::constant;
-    p.tensileStrength = 1e6;
-    p.shearStrength = 1e6;
-    p.softeningRatio = 0.5;
-    p.brokenFraction = 0.05;
-    const BondLaw law = BondLaw::make(p, dt);
+    const BondLaw law = BondLaw::make(softening(0.05), dt);
     const BondGeometry g = touching();
     const double delta1 = 1e6 / kne, v = delta1 / (400.5 * dt); // no step lands on x = 1
     BondState s = fresh();
@@ -501,13 +508,7 @@ TEST(BondLaw, BranchAtZeroBreaksWithoutABrokenFraction)
     // brokenFraction 0: the bond breaks where the softening branch reaches zero force, x =
     // delta/delta_1 = 1 + 1/rho = 3 for rho = 0.5, and not one step later or earlier (a patch
     // shrunk to r_b = 0 used to stay on as an intact bond that carries nothing).
-    BondParameters p = elastic();
-    p.strength = dem::BondStrength::constant;
-    p.tensileStrength = 1e6;
-    p.shearStrength = 1e6;
-    p.softeningRatio = 0.5;
-    p.brokenFraction = 0.0;
-    const BondLaw law = BondLaw::make(p, dt);
+    const BondLaw law = BondLaw::make(softening(0.0), dt);
     const BondGeometry g = touching();
     const double delta1 = 1e6 / kne, v = delta1 / (400.5 * dt); // no step lands on x = 3
     BondState s = fresh();
