@@ -32,10 +32,10 @@ struct OmpExecution
     static const char* name() { return "cpu"; }
     static int threads() { return omp_get_max_threads(); }
     //- Below this many items a kernel runs on one thread: forking costs more than it saves,
-    //- and on a loaded machine a descheduled thread would stall every barrier. Measured with 2
-    //- threads (src/dem/README.md, Benchmark): 1024 against the earlier 4096 speeds a
-    //- 1200-grain bed's per-grain kernels up by 20-40 %; 256 slowed a 400-grain pour by 21 %.
-    static constexpr int kParallelThreshold = 1024;
+    //- and on a loaded machine a descheduled thread would stall every barrier. 1024 was
+    //- tried (src/dem/README.md, Benchmark): faster on quiet runs, but a 600-grain coupled
+    //- shear stage then took 2-2.5 times as long in 3 of 5 runs.
+    static constexpr int kParallelThreshold = 4096;
 
     template <class F>
     static void forEach(int n, const F& f)
