@@ -120,18 +120,6 @@ Foam::grainCoupling::grainCoupling
         )
       : porosityRateForm::exactDifference
     ),
-    wallDeposit_
-    (
-        coupled()
-      ? inputChecks::getChoiceOrDefault
-        (
-            dict,
-            "depositAtWalls",
-            wallDepositNames,
-            wallDeposit::inside
-        )
-      : wallDeposit::inside
-    ),
     porosity_(porosity),
     porosityRate_(porosityRate),
     Us_(Us),
@@ -177,6 +165,15 @@ Foam::grainCoupling::grainCoupling
 
     if (coupled())
     {
+        // Where the deposit may reach at walls: the grains' own setting
+        const wallDeposit atWalls = inputChecks::getChoiceOrDefault
+        (
+            dict,
+            "depositAtWalls",
+            wallDepositNames,
+            wallDeposit::inside
+        );
+        cloud_.keepDepositInsideWalls(atWalls == wallDeposit::inside);
         if (porosityMin_ >= porosityMax_)
         {
             FatalIOErrorInFunction(dict)
@@ -186,10 +183,9 @@ Foam::grainCoupling::grainCoupling
                 << nl << exit(FatalIOError);
         }
         Info<< "    porosity rate: " << porosityRateFormNames[rateForm_]
-            << nl << "    deposit at walls: " << wallDepositNames[wallDeposit_]
+            << nl << "    deposit at walls: " << wallDepositNames[atWalls]
             << endl;
     }
-    cloud_.keepDepositInsideWalls(wallDeposit_ == wallDeposit::inside);
 
     // The grains of the start time define the porosity there (also on a
     // restart: the deposit is deterministic)
