@@ -90,7 +90,9 @@ def ns_flux():
 def test_darcy_and_navier_stokes_give_the_same_flux():
     q_darcy, eps_darcy = darcy_flux()
     q_ns, q_ns_prev, eps_ns = ns_flux()
-    assert np.array_equal(eps_darcy, eps_ns)  # one packing, one deposit
+    # One packing, one deposit: the same bits on the CPU; on CUDA the deposit adds
+    # with atomics in no fixed order, so the two runs agree to round-off only.
+    assert np.max(np.abs(eps_darcy - eps_ns)) < 1e-12
     print(f"porosity {eps_ns.min():.12f}-{eps_ns.max():.12f} (lattice {EPS:.12f})")
     assert np.max(np.abs(eps_ns - EPS)) < 1e-12
     d, n = q_darcy.mean(), q_ns.mean()
