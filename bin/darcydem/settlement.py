@@ -38,7 +38,7 @@ import numpy as np
 
 from darcydem.case import Case
 from darcydem.cli import StageClock, require_folder, say
-from darcydem.foamfiles import grain_files, read_columns, read_vtp_lines
+from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp_lines
 from darcydem.smoothing import hanning_smooth
 
 BIN = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -81,7 +81,16 @@ RELAX_TIME = 0.1        # [s] with the drag below
 RELAX_LID_MASS = 1e-3   # [kg]: the lid closes a gap of 0.1 mm in about 0.02 s
 RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
 RELAX_DRAG = 3e-4       # [N s/m]: m/c about 5 ms for a grain of 1.6e-6 kg
+# Contact viscosity of the bonds while the sample is made (contract, relax): the lowest of the
+# settlement runs (--preparation-viscosity). At the paper's strength scaling (--strength-scale
+# 1e-3) it breaks the bonds as fast as they freeze (quick size: 8782 of 9493 in the
+# contraction), 16 Pa s does not (56 of 1980); README "Preparation at the paper's strength".
 PREPARATION_VISCOSITY = PAPER_VISCOSITIES[0]
+# --preparation-sweep: the contraction alone at these contact viscosities, at the size's
+# strain rate, and at SWEEP_SLOW_VISCOSITY with the strain rate times each SWEEP_SLOWER
+SWEEP_VISCOSITIES = (16.0, 160.0, 1600.0, 16000.0)
+SWEEP_SLOW_VISCOSITY = 1600.0
+SWEEP_SLOWER = (0.3, 0.1)
 
 # Write times of a settlement run: the bonds' .vtp at each gives the stress per mode
 SETTLE_WRITES = 20
@@ -146,16 +155,12 @@ class Run:
             return None
         times, modes = [], {m: [] for m in ("normal", "shear", "twist", "bend")}
         for t, path in files:
-            b = read_vtp_lines(path)
-            if len(b["lines"]) == 0 or "bendMoment" not in b:
+            stresses = bond_mode_stresses(path)
+            if stresses is None or len(stresses["normal"]) == 0:
                 continue
-            rb = b["patchRadius"]
-            area, inertia = np.pi * rb**2, np.pi * rb**4 / 4
             times.append(t)
-            modes["normal"].append(np.mean(np.abs(b["normalForce"]) / area))
-            modes["shear"].append(np.mean(b["shearForce"] / area))
-            modes["twist"].append(np.mean(np.abs(b["twistMoment"]) * rb / (2 * inertia)))
-            modes["bend"].append(np.mean(b["bendMoment"] * rb / inertia))
+            for m in modes:
+                modes[m].append(np.mean(stresses[m]))
         if not times:
             return None
         return np.array(times), {m: np.array(v) for m, v in modes.items()}
@@ -215,7 +220,8 @@ class Run:
 
 
 class SettlementStudy:
-    def __init__(self, study_dir, size="quick", log=say):
+    def __init__(self, study_dir, size="quick", log=say,
+                 preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
@@ -228,7 +234,11 @@ class SettlementStudy:
         lx, ly, lz = self.s["box"]
         # the loose box, and the mesh around it (the walls bound the grains)
         self.loose = (lx * CONTRACTION, ly, lz * CONTRACTION)
+        self.preparation_viscosity = preparation_viscosity
+        self.strength_scale = strength_scale   # None: the template's
         self.results = {"size": size, "settings": dict(self.s), "runs": {}}
+        self.results["settings"]["preparationViscosity"] = preparation_viscosity
+        self.results["settings"]["strengthScale"] = strength_scale
 
     # ---- stages ---------------------------------------------------------------------------
     def stage(self, name, state_from=None):
@@ -242,6 +252,8 @@ class SettlementStudy:
         for key, value in (("nx", lx), ("ny", ly), ("nz", lz)):
             c.set_variable(block, key, max(1, round(value / cell)))
         os.makedirs(c.file("0"), exist_ok=True)
+        if self.strength_scale is not None:
+            c.set("constant/demProperties", "bonds/strength/scale", "%g" % self.strength_scale)
         return c.mesh(state_from)
 
     def final_walls(self):
@@ -251,7 +263,7 @@ class SettlementStudy:
         z0 = 0.5 * (self.loose[2] - lz)
         return x0, x0 + lx, z0, z0 + lz
 
-    def set_walls(self, c, moving):
+    def set_walls(self, c, moving, rate=None):
         dem = "constant/demProperties"
         if moving:
             # the walls close on the middle of the loose box at the wall strain rate and
@@ -259,7 +271,7 @@ class SettlementStudy:
             # is SWEEP x slower, so the walls catch the outermost grains and press them onto
             # the skeleton: it ends touching every wall
             lx, _, lz = self.loose
-            rate = self.s["strainRate"]
+            rate = self.s["strainRate"] if rate is None else rate
             for wall, position, middle in (("left", 0.0, lx / 2), ("right", lx, lx / 2),
                                            ("bottom", 0.0, lz / 2), ("lid", lz, lz / 2)):
                 c.set(dem, f"walls/{wall}/mode", "velocity")
@@ -282,15 +294,17 @@ class SettlementStudy:
             c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
         c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
 
-    def contraction_time(self):
-        return (1 / CONTRACTION - 1) / self.s["strainRate"]
+    def contraction_time(self, rate=None):
+        return (1 / CONTRACTION - 1) / (self.s["strainRate"] if rate is None else rate)
 
-    def prepare(self):
+    def contract(self, name, viscosity, rate):
+        """The contraction at wall strain rate `rate` with the bonds' contact
+        viscosity `viscosity`: the case of stage `name`."""
         s = self.s
         dem = "constant/demProperties"
         lx, ly, lz = self.loose
-        a = self.stage("contract")
-        grain_rate = SWEEP * s["strainRate"]
+        a = self.stage(name)
+        grain_rate = SWEEP * rate
         subprocess.run([os.path.join(BIN, "makeGrains"), "--box", "%.12g" % lx, "%.12g" % ly,
                         "--z", "0", "%.12g" % lz, "--radius", str(RADIUS[0]), str(RADIUS[1]),
                         "--layout", "random", "--count", str(s["count"]),
@@ -300,12 +314,19 @@ class SettlementStudy:
                         "--strain-origin", "%.12g" % (lx / 2), "0", "%.12g" % (lz / 2),
                         "--seed", str(s["seed"]), "-o", a.file("0/grains")],
                        check=True, stdout=subprocess.DEVNULL)
-        self.set_walls(a, moving=True)
+        self.set_walls(a, moving=True, rate=rate)
         a.set(dem, "gravity", "(0 0 0)")
-        a.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
-        self.controls(a, self.contraction_time(), 4, rows=400)
-        self.timed_run(a, "contract", f"{s['count']} capsules contract by {CONTRACTION}"
-                       " in x and z", self.contraction_time())
+        a.set(dem, "bonds/creep/contactViscosity", "%.12g" % viscosity)
+        self.controls(a, self.contraction_time(rate), 4, rows=400)
+        self.timed_run(a, name, f"{s['count']} capsules contract by {CONTRACTION}"
+                       f" in x and z, contact viscosity {label(viscosity)}",
+                       self.contraction_time(rate))
+        return a
+
+    def prepare(self):
+        s = self.s
+        dem = "constant/demProperties"
+        a = self.contract("contract", self.preparation_viscosity, s["strainRate"])
 
         b = self.stage("relax", state_from=self.last_state(a))
         self.set_walls(b, moving=False)
@@ -318,7 +339,7 @@ class SettlementStudy:
         b.set(dem, "walls/lid/normalStress", "%.12g" % (RELAX_LID_STRESS * lid_stress))
         b.set(dem, "gravity", "(0 0 0)")
         b.set(dem, "viscousDrag", RELAX_DRAG)
-        b.set(dem, "bonds/creep/contactViscosity", PREPARATION_VISCOSITY)
+        b.set(dem, "bonds/creep/contactViscosity", "%.12g" % self.preparation_viscosity)
         self.controls(b, RELAX_TIME, 1, rows=100)
         self.timed_run(b, "relax", f"drag {RELAX_DRAG} N s/m", RELAX_TIME)
         self.prepared = self.last_state(b)
@@ -326,6 +347,51 @@ class SettlementStudy:
         self.results["prepare"] = {k: float(start[k][-1]) for k in
                                    ("density", "solidFraction", "coordinationNumber",
                                     "bondsIntact", "meanPatchRadius")}
+        # bonds frozen and broken in the preparation (counted from the contraction's start)
+        for key in ("bondsFormed", "bondsBroken"):
+            self.results["prepare"][key] = float(start[key][-1])
+
+    def preparation_sweep(self):
+        """The contraction alone at each of SWEEP_VISCOSITIES (the size's strain
+        rate) and at SWEEP_SLOW_VISCOSITY contracting SWEEP_SLOWER times as
+        fast, with the study's bonds (--strength-scale, else the template's
+        strength): how many bonds
+        froze and broke, and the bonds' stress per mode at the end
+        (settlementPreparation.png, results.json "preparationSweep")."""
+        rate = self.s["strainRate"]
+        cases = [(nu, rate) for nu in SWEEP_VISCOSITIES]
+        cases += [(SWEEP_SLOW_VISCOSITY, rate * f) for f in SWEEP_SLOWER]
+        rows = []
+        for nu, r in cases:
+            name = "contract_nu%g" % nu + ("" if r == rate else "_rate%g" % r)
+            a = self.contract(name, nu, r)
+            end = read_columns(a.file(PACKING))
+            row = {"viscosity": nu, "strainRate": r,
+                   "wallSeconds": self.results["wallSeconds"][name]}
+            row.update({k: float(end[k][-1]) for k in
+                        ("bondsFormed", "bondsBroken", "bondsIntact", "coordinationNumber")})
+            files = grain_files(a.path, "bonds")
+            stresses = bond_mode_stresses(files[-1][1]) if files else None
+            row["modeStress95"] = {m: float(np.percentile(v, 95)) if len(v) else 0.0
+                                   for m, v in (stresses or {}).items() if m != "normal"}
+            self.log(f"settlementStudy: {name}: {row['bondsFormed']:.0f} bonds frozen,"
+                     f" {row['bondsBroken']:.0f} broken, coordination number"
+                     f" {row['coordinationNumber']:.2f}")
+            rows.append(row)
+        self.results["preparationSweep"] = rows
+        plot_preparation_sweep(rows, self.dir, rate, self.strength())
+        self.write_results()
+        return rows
+
+    def strength(self):
+        """The bonds' tensile strength of the stages [Pa]: sigma_ice(T) times
+        the scale (--strength-scale, else the template's; doc/EQUATIONS.md
+        section 10, the paper's fit)."""
+        path = os.path.join(self.dir, "constant", "demProperties")
+        temperature = read_scalar_entry(path, "bonds/temperature")
+        scale = (read_scalar_entry(path, "bonds/strength/scale")
+                 if self.strength_scale is None else self.strength_scale)
+        return scale * (0.99648 - 0.045904 * temperature) * 1e6
 
     @staticmethod
     def last_state(case):
@@ -437,6 +503,60 @@ class SettlementStudy:
     # ---- figures --------------------------------------------------------------------------
     def plot(self, runs):
         plot_figures(runs, self.dir, self.s["box"], self.results)
+
+
+def bond_mode_stresses(path):
+    """Per intact bond of a bonds .vtp, the peak stress of each mode that the
+    strength check compares (doc/EQUATIONS.md section 10): {"normal": |N|/A,
+    "shear": |S|/A, "twist": |M_t| r_b/J, "bend": |M_b| r_b/I}, J = 2 I =
+    pi r_b^4 / 2, and "tension": max(N, 0)/A (what the strength check adds to
+    the bending stress; compression never breaks a bond); None for a file
+    without the moments."""
+    b = read_vtp_lines(path)
+    if "bendMoment" not in b:
+        return None
+    rb = b["patchRadius"]
+    area, inertia = np.pi * rb**2, np.pi * rb**4 / 4
+    return {"normal": np.abs(b["normalForce"]) / area,
+            "tension": np.maximum(b["normalForce"], 0.0) / area,
+            "shear": b["shearForce"] / area,
+            "twist": np.abs(b["twistMoment"]) * rb / (2 * inertia),
+            "bend": b["bendMoment"] * rb / inertia}
+
+
+def plot_preparation_sweep(rows, out_dir, rate, strength):
+    """settlementPreparation.png: bonds frozen and broken in the contraction,
+    and the 95th percentile of the intact bonds' stress per mode at its end,
+    against the contact viscosity; the slower contractions as open marks."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
+    base = [r for r in rows if r["strainRate"] == rate]
+    slow = [r for r in rows if r["strainRate"] != rate]
+    nu = [r["viscosity"] for r in base]
+    ax[0].loglog(nu, [r["bondsFormed"] for r in base], "ko-", label="frozen")
+    ax[0].loglog(nu, [max(r["bondsBroken"], 0.5) for r in base], "rs-", label="broken")
+    for r in slow:
+        ax[0].loglog(r["viscosity"], r["bondsFormed"], "o", mfc="none", mec="k")
+        ax[0].loglog(r["viscosity"], max(r["bondsBroken"], 0.5), "s", mfc="none", mec="r")
+        ax[0].annotate(f"{r['strainRate']:g} 1/s", (r["viscosity"], r["bondsBroken"]),
+                       textcoords="offset points", xytext=(6, -10), fontsize=7)
+    ax[0].set_xlabel("contact viscosity while contracting ν_s [Pa s]")
+    ax[0].set_ylabel("bonds in the contraction")
+    ax[0].set_title(f"filled: strain rate {rate:g} 1/s; open: slower", fontsize=9)
+    ax[0].legend(fontsize=8)
+    for mode, mark in (("tension", "v"), ("shear", "^"), ("twist", "D"), ("bend", "o")):
+        ax[1].loglog(nu, [max(r["modeStress95"].get(mode, 0.0), 1e-3) for r in base],
+                     marker=mark, label=mode)
+    ax[1].axhline(strength, color="k", ls="--", lw=0.8, label="strength")
+    ax[1].set_xlabel("contact viscosity while contracting ν_s [Pa s]")
+    ax[1].set_ylabel("95th percentile of the intact bonds' stress [Pa]")
+    ax[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "settlementPreparation.png"), dpi=120)
+    plt.close(fig)
 
 
 def reference_density(runs, wanted=300.0):
@@ -646,11 +766,31 @@ def main(argv):
                     help="the lowest contact viscosity again, all creep on and each"
                          " --creep-off mechanism off, with the bonds' strength scale SCALE"
                          " while settling (settlementWeakBonds.png)")
+    ap.add_argument("--preparation-viscosity", type=float, metavar="NU",
+                    default=PREPARATION_VISCOSITY,
+                    help="the bonds' contact viscosity while the sample is made [Pa s]"
+                         " (default %(default)g)")
+    ap.add_argument("--strength-scale", type=float, metavar="SCALE",
+                    help="the bonds' strength scale (of sigma_ice) in every stage, instead of"
+                         " the template's (the paper's scaling: 1e-3)")
+    ap.add_argument("--preparation-sweep", action="store_true",
+                    help="only the contraction, at several contact viscosities and"
+                         " strain rates: bonds frozen and broken (settlementPreparation.png)")
     a = ap.parse_args(argv)
+    if not a.preparation_viscosity > 0:
+        sys.exit(f"settlementStudy: --preparation-viscosity {a.preparation_viscosity:g}:"
+                 " the contact viscosity must be > 0 Pa s")
+    if a.strength_scale is not None and not a.strength_scale > 0:
+        sys.exit(f"settlementStudy: --strength-scale {a.strength_scale:g}: the scale must be > 0")
     if a.weak_bonds is not None and not a.weak_bonds > 0:
         sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
-    study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size)
+    study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
+                            preparation_viscosity=a.preparation_viscosity,
+                            strength_scale=a.strength_scale)
+    if a.preparation_sweep:
+        study.preparation_sweep()
+        return
     if a.plot_only:
         # keep what the runs recorded (preparation, timings); the figures' numbers update
         previous = os.path.join(study.dir, "results.json")

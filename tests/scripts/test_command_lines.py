@@ -73,16 +73,22 @@ def test_missing_folder_is_one_line(script, folder, tmp_path):
         assert os.listdir(tmp_path / "empty") == []
 
 
-def test_settlement_weak_bonds_scale_must_be_positive(tmp_path):
-    """settlementStudy --weak-bonds 0 (a bond strength of zero): one line
+@pytest.mark.parametrize("option, message", [
+    ("--weak-bonds", "settlementStudy: --weak-bonds 0: the scale must be > 0"),
+    ("--strength-scale", "settlementStudy: --strength-scale 0: the scale must be > 0"),
+    ("--preparation-viscosity",
+     "settlementStudy: --preparation-viscosity 0: the contact viscosity must be > 0 Pa s")])
+def test_settlement_scales_must_be_positive(tmp_path, option, message):
+    """settlementStudy --weak-bonds 0 or --strength-scale 0 (a bond strength of
+    zero) or --preparation-viscosity 0 (bonds without viscosity): one line
     naming the option, before any folder is looked at or made."""
     shutil.copytree(os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement"),
                     tmp_path / "study", ignore=shutil.ignore_patterns(
                         "stages", "*.png", "results.json", "log.*"))
-    r = run(["settlementStudy", "study", "--weak-bonds", "0"], tmp_path)
+    r = run(["settlementStudy", "study", option, "0"], tmp_path)
     print(r.stderr)
     assert r.returncode != 0 and "Traceback" not in r.stderr
-    assert r.stderr.strip() == "settlementStudy: --weak-bonds 0: the scale must be > 0"
+    assert r.stderr.strip() == message
     assert not os.path.exists(tmp_path / "study" / "stages")
 
 

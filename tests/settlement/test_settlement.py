@@ -154,8 +154,8 @@ def test_stress_builds_up_in_the_mode_without_creep(study):
     sample: without the effect the two runs would be the same (ratio 1
     exactly, the runs are deterministic), rotations that reverse bring it
     below the steady estimate, and 2 asks for a clear build-up. The bending
-    creep sum stays what the preparation left, the other modes' creep grows.
-    The numbers are printed."""
+    creep sum stays what the preparation left (to round-off, 1e-12), the
+    other modes' creep grows. The numbers are printed."""
     s, runs = study
     reference = next(r for r in runs if r.nu == min(x.nu for x in runs))
     bend_off = s.variants[0]
@@ -169,7 +169,10 @@ def test_stress_builds_up_in_the_mode_without_creep(study):
           f" {off['twist'][-1]:.4g} against {on['twist'][-1]:.4g} Pa, shear {off['shear'][-1]:.4g}"
           f" against {on['shear'][-1]:.4g} Pa")
     assert ratio > 2
-    assert np.all(bend_off.creep["bend"] == bend_off.creep["bend"][0])
+    # constant to round-off: a bond that breaks moves its creep from the intact bonds' sum
+    # to the broken ones', which adds in another order
+    bend_sum = bend_off.creep["bend"]
+    assert np.all(np.abs(bend_sum - bend_sum[0]) <= 1e-12 * bend_sum[0])
     assert bend_off.creep["shear"][-1] > bend_off.creep["shear"][0]
     assert bend_off.creep["twist"][-1] > bend_off.creep["twist"][0]
 
