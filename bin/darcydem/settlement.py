@@ -264,6 +264,8 @@ class SettlementStudy:
         return x0, x0 + lx, z0, z0 + lz
 
     def set_walls(self, c, moving, rate=None):
+        """The walls of case c: closing at wall strain rate `rate` (moving),
+        or still at the paper's box."""
         dem = "constant/demProperties"
         if moving:
             # the walls close on the middle of the loose box at the wall strain rate and
@@ -271,7 +273,6 @@ class SettlementStudy:
             # is SWEEP x slower, so the walls catch the outermost grains and press them onto
             # the skeleton: it ends touching every wall
             lx, _, lz = self.loose
-            rate = self.s["strainRate"] if rate is None else rate
             for wall, position, middle in (("left", 0.0, lx / 2), ("right", lx, lx / 2),
                                            ("bottom", 0.0, lz / 2), ("lid", lz, lz / 2)):
                 c.set(dem, f"walls/{wall}/mode", "velocity")
@@ -294,8 +295,9 @@ class SettlementStudy:
             c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
         c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
 
-    def contraction_time(self, rate=None):
-        return (1 / CONTRACTION - 1) / (self.s["strainRate"] if rate is None else rate)
+    @staticmethod
+    def contraction_time(rate):
+        return (1 / CONTRACTION - 1) / rate
 
     def contract(self, name, viscosity, rate):
         """The contraction at wall strain rate `rate` with the bonds' contact
@@ -317,10 +319,10 @@ class SettlementStudy:
         self.set_walls(a, moving=True, rate=rate)
         a.set(dem, "gravity", "(0 0 0)")
         a.set(dem, "bonds/creep/contactViscosity", "%.12g" % viscosity)
-        self.controls(a, self.contraction_time(rate), 4, rows=400)
+        end = self.contraction_time(rate)
+        self.controls(a, end, 4, rows=400)
         self.timed_run(a, name, f"{s['count']} capsules contract by {CONTRACTION}"
-                       f" in x and z, contact viscosity {label(viscosity)}",
-                       self.contraction_time(rate))
+                       f" in x and z, contact viscosity {label(viscosity)}", end)
         return a
 
     def prepare(self):
@@ -344,12 +346,11 @@ class SettlementStudy:
         self.timed_run(b, "relax", f"drag {RELAX_DRAG} N s/m", RELAX_TIME)
         self.prepared = self.last_state(b)
         start = read_columns(b.file(PACKING))
+        # bondsFormed and bondsBroken count from the contraction's start: the preparation's
         self.results["prepare"] = {k: float(start[k][-1]) for k in
                                    ("density", "solidFraction", "coordinationNumber",
-                                    "bondsIntact", "meanPatchRadius")}
-        # bonds frozen and broken in the preparation (counted from the contraction's start)
-        for key in ("bondsFormed", "bondsBroken"):
-            self.results["prepare"][key] = float(start[key][-1])
+                                    "bondsIntact", "meanPatchRadius", "bondsFormed",
+                                    "bondsBroken")}
 
     def preparation_sweep(self):
         """The contraction alone at each of SWEEP_VISCOSITIES (the size's strain
