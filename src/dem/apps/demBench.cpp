@@ -6,13 +6,16 @@
 // step, formation checks every 10 steps, elastic patch with Maxwell creep), the cost of bonds
 // against the same grains without. --pour: the flowing benchmark instead (PourPacking.h; no drag,
 // 1000 untimed lead-in steps, 4000 timed steps, the neighbour lists rebuilt every few hundred
-// steps). The last line is machine-readable:
+// steps). --decompose NXxNY under mpirun -np NX*NY: the same problem split over MPI ranks
+// (Parameters::decomposition; each rank reads the file and adds its own block of grains;
+// the figures are of all ranks; rank 0 prints). The last line is machine-readable:
 //   particle_steps_per_s=<number> N=<int> threads=<int> backend=<name> contacts_per_grain=<number>
 //   shape=<sphere|capsule> aspect=<number> bonds=<intact bonds per grain> steps=<timed steps>
 //   rebuilds=<neighbour rebuilds while timed> skin=<m> problem=<standard|pour>
 #include "CapsulePacking.h"
 #include "PackingFile.h"
 #include "PourPacking.h"
+#include "dem/Mpi.h"
 #include "dem/System.h"
 
 #include <algorithm>
@@ -49,10 +52,15 @@ void usage()
                  "10 m/s with random velocities (--seed), or the start saved with "
                  "--write-packing (x y z r vx vy vz) as --packing; no drag, --relax-steps are "
                  "an untimed lead-in\n"
-                 "--write-packing FILE --steps 0: set up and save the start only\n";
+                 "--write-packing FILE --steps 0: set up and save the start only\n"
+                 "--decompose NXxNY: split the box into NX x NY boxes, one per MPI rank "
+                 "(mpirun -np NX*NY demBench ...; spheres and capsules without bonds)\n";
 }
 
-//- Translational kinetic energy [J] and sum of |omega| components [rad/s] of the grains.
+const dem::MpiSession* mpi = nullptr; //!< sums over the ranks
+
+//- Translational kinetic energy [J] and sum of |omega| components [rad/s] of the grains (of all
+//- ranks).
 std::pair<double, double> motionOf(const dem::GrainData& state)
 {
     double kinetic = 0.0, rotationRate = 0.0;
@@ -62,7 +70,7 @@ std::pair<double, double> motionOf(const dem::GrainData& state)
             kinetic += 0.5 * state.mass[i] * state.velocity[3 * i + d] * state.velocity[3 * i + d];
             rotationRate += std::fabs(state.angularVelocity[3 * i + d]);
         }
-    return {kinetic, rotationRate};
+    return {mpi->sum(kinetic), mpi->sum(rotationRate)};
 }
 
 //- The grains to start from: the packing file, else (--pour) the generated pour.
@@ -124,6 +132,11 @@ dem::Backend parseBackend(const std::string& name)
 
 int main(int argc, char** argv)
 {
+    const dem::MpiSession session(&argc, &argv);
+    mpi = &session;
+    // Rank 0 speaks; the others' output goes nowhere (errors are printed by every rank).
+    if (session.rank() != 0 && !std::freopen("/dev/null", "w", stdout))
+        return 1;
     std::string packingFile;
     int relaxSteps = 1000, steps = -1, threads = 0; // steps: 2000, 4000 with --pour
     // Verlet skin 2e-3 m = 0.1 d, the benchmark's common setting (bench/README.md): every code
@@ -132,7 +145,7 @@ int main(int argc, char** argv)
     // steps.
     double skin = 2e-3, friction = 0.5;
     dem::Backend backend = dem::Backend::automatic;
-    std::pair<int, int> copies{1, 1};
+    std::pair<int, int> copies{1, 1}, boxes{1, 1};
     std::string shape = "sphere", writeFile;
     bool bonds = false, pour = false;
     dem::CapsulePackingSettings capsules;
@@ -162,6 +175,8 @@ int main(int argc, char** argv)
                 skin = std::stod(value());
             else if (arg == "--replicate")
                 copies = parseReplicate(value());
+            else if (arg == "--decompose")
+                boxes = parseReplicate(value());
             else if (arg == "--shape")
             {
                 shape = value();
@@ -256,8 +271,23 @@ int main(int argc, char** argv)
             p.bonds.contactViscosity = 1e6;
         }
 
+        // (after the capsule set-up above, which every rank runs alike on one process)
+        p.decomposition.ranks = {boxes.first, boxes.second};
+        if (p.decomposition.rankCount() != session.size())
+            throw dem::Error("--decompose " + std::to_string(boxes.first) + "x" +
+                             std::to_string(boxes.second) + " needs mpirun -np " +
+                             std::to_string(p.decomposition.rankCount()) + ", not " +
+                             std::to_string(session.size()) + " rank(s)");
         dem::System system(p);
-        system.addGrains(packing.grains);
+        {
+            // Each rank adds its block of the file's grains (add order kept: rank 0's first);
+            // the first step moves them to their owners.
+            const std::size_t all = packing.grains.size(), r = std::size_t(session.rank()),
+                              ranks = std::size_t(session.size());
+            system.addGrains(
+                std::vector<dem::GrainInit>(packing.grains.begin() + long(all * r / ranks),
+                                            packing.grains.begin() + long(all * (r + 1) / ranks)));
+        }
         dem::WallSpec bottom;
         bottom.side = dem::WallSpec::Side::lower;
         bottom.position = 0.0;
@@ -279,6 +309,14 @@ int main(int argc, char** argv)
         system.setViscousDrag(pour ? 0.0 : drag);
         system.step(relaxSteps);
         system.setViscousDrag(0.0);
+        if (session.size() > 1) // the grains are with their owners now
+        {
+            const double owned = double(system.grains().mass.size());
+            std::printf("decomposition %dx%d: grains per rank %g (min) %g (max) %g (mean), "
+                        "load imbalance max/mean %.3f\n",
+                        boxes.first, boxes.second, session.min(owned), session.max(owned),
+                        double(n) / session.size(), session.max(owned) * session.size() / n);
+        }
         // The start of the timed phase, for comparisons with other codes (--pour: before the
         // flow turns chaotic)
         const std::pair<double, double> lead = motionOf(system.grains());
@@ -301,7 +339,7 @@ int main(int argc, char** argv)
                     "while timed (%.3g per 1000 steps), %.3f list pairs per grain\n",
                     pour ? "lead-in" : "relaxation", relaxSteps, steps, seconds, rebuilds,
                     steps > 0 ? 1000.0 * double(rebuilds) / steps : 0.0,
-                    double(system.pairCount()) / double(n));
+                    session.sum(double(system.pairCount())) / double(n));
         // On a shared machine the CPU time shows what the code costs when it is not waiting.
         std::printf("timed phase used %.4f s of CPU time (%.3g particle-steps per CPU-second)\n",
                     cpuSeconds, double(n) * steps / cpuSeconds);
@@ -312,10 +350,10 @@ int main(int argc, char** argv)
                     motion.first, motion.second);
         std::printf("particle_steps_per_s=%.6g N=%ld threads=%d backend=%s "
                     "contacts_per_grain=%.4f shape=%s aspect=%g bonds=%.4f steps=%d "
-                    "rebuilds=%zu skin=%g problem=%s\n",
+                    "rebuilds=%zu skin=%g problem=%s ranks=%d\n",
                     rate, n, system.threadCount(), system.backendName().c_str(), contactsPerGrain,
                     shape.c_str(), aspect, bondsPerGrain, steps, rebuilds, skin,
-                    pour ? "pour" : "standard");
+                    pour ? "pour" : "standard", session.size());
         return 0;
     }
     catch (const std::exception& e)

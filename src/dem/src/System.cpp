@@ -143,6 +143,14 @@ void checkParameters(const Parameters& p)
                 p.boxUpper[d], "> boxLower");
     checkBondStore(p.bonds);
     checkBondLaw(p.bonds);
+    for (int d = 0; d < 2; ++d)
+        require(p.decomposition.ranks[d] >= 1,
+                d == 0 ? "decomposition.ranks[0]" : "decomposition.ranks[1]",
+                p.decomposition.ranks[d], ">= 1 (boxes along x and y; 1 x 1: one process)");
+    if (p.decomposition.rankCount() > 1 && p.bonds.enabled)
+        throw Error("bonds with a decomposition over MPI ranks are not available yet (bonds "
+                    "crossing a rank boundary do not travel): run bonded systems on one process "
+                    "(decomposition 1 x 1)");
 }
 
 void checkWall(const WallSpec& w, const Parameters& p)
@@ -206,9 +214,7 @@ System& System::operator=(System&&) noexcept = default;
 
 int System::addGrains(const std::vector<GrainInit>& grains)
 {
-    const int first = int(impl_->engine->grainCount());
-    impl_->engine->addGrains(grains);
-    return first;
+    return impl_->engine->addGrains(grains);
 }
 
 int System::addWall(const WallSpec& wall)

@@ -1,7 +1,9 @@
 // ErrorTest.cpp
 // Refusals are exceptions with clear messages: contact-storage overflow (never a silent drop),
-// a time step above the critical fraction, invalid parameters, an unavailable CUDA backend.
+// a time step above the critical fraction, invalid parameters, an unavailable CUDA backend, a
+// decomposition over MPI ranks without MPI.
 #include "TestSupport.h"
+#include "dem/Mpi.h"
 
 using namespace demTest;
 
@@ -109,6 +111,18 @@ TEST_P(Errors, BlownUpStepNamesTheGrain)
 }
 
 DEM_TEST_ON_ALL_BACKENDS(Errors);
+
+// A decomposition over ranks in a program that did not start MPI (this test binary): the
+// message says how to start it (with MPI built in), or that MPI is not built in.
+TEST_P(Errors, DecompositionWithoutMpiIsRefused)
+{
+    dem::Parameters p = parameters();
+    p.decomposition.ranks = {2, 1};
+    const std::string message = messageOf([&] { dem::System s(p); });
+    const std::string expected = dem::mpiBuild() ? "MPI is not running" : "built without MPI";
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_NE(message.find("decomposition"), std::string::npos) << message;
+}
 
 TEST(Backends, CudaWithoutDeviceFailsClearly)
 {

@@ -153,6 +153,17 @@ struct BondParameters
     std::uint64_t seed = 1;    //!< new bonds' r_b: hash of (seed, grain ids), no thread effect
 };
 
+//- How a System is split over the ranks of MPI_COMM_WORLD: a regular grid of ranks[0] x ranks[1]
+//- boxes over the box's x-y extent (boxLower..boxUpper, equal widths; a non-periodic side's
+//- outer boxes reach to infinity). Each rank owns the grains whose centres lie in its box and
+//- holds copies (ghosts) of the others' grains within 2 b_max + neighbourSkin of it
+//- (src/dem/README.md, "Decomposition over MPI ranks"). 1 x 1: one process, no MPI call.
+struct Decomposition
+{
+    std::array<int, 2> ranks{1, 1};
+    int rankCount() const { return ranks[0] * ranks[1]; }
+};
+
 //- The System's construction parameters.
 struct Parameters
 {
@@ -175,6 +186,7 @@ struct Parameters
     //- set limit throws dem::Error; storage never drops a pair silently.
     int maxPairsPerGrain = 0;
     BondParameters bonds;
+    Decomposition decomposition;
 };
 
 //- One grain to add: a sphere, or a capsule (a core segment of length 2 coreHalfLength along

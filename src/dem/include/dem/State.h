@@ -17,7 +17,8 @@
 namespace dem
 {
 
-//- Grain state in add order; vectors are 3 per grain interleaved (x0 y0 z0 x1 ...).
+//- Grain state in add order; vectors are 3 per grain interleaved (x0 y0 z0 x1 ...). With a
+//- Decomposition: the grains the calling rank owns, in add order (see id).
 struct GrainData
 {
     std::vector<double> position;     //!< wrapped into the periodic box
@@ -35,6 +36,9 @@ struct GrainData
     std::vector<double> mass;
     std::vector<int> contactCount; //!< touching grain-grain contacts (walls not counted)
     std::vector<GrainFlag> flag;
+    //- add-order index of each grain (0, 1, 2, ... on one process; with a Decomposition the
+    //- grains this rank owns, in increasing index)
+    std::vector<int> id;
 };
 
 //- The deepest overlap between two grains (System::largestOverlap): depth of the overlap of

@@ -3,6 +3,12 @@
 // (OpenMP) or CUDA backend chosen at run time. Plain C++ only: this header is included by
 // OpenFOAM code. All refusals throw dem::Error.
 //
+// Over MPI ranks (Parameters::decomposition, src/dem/README.md): each rank's System owns the
+// grains in its box; set-up, step() and the read-backs that reduce (grainCount, wall,
+// contactCount, prescribedGrainForceX/ImpulseX, criticalTimeStep) are collective; grains()
+// returns this rank's own; pairCount is this rank's list. Fluid coupling, flags, restart, bonds
+// and largestOverlap are refused for now.
+//
 // Typical use:
 //     dem::System dem(params);
 //     dem.addGrains(grains); dem.addWall(bottom); dem.addWall(top);
@@ -39,7 +45,10 @@ public:
     System& operator=(const System&) = delete;
 
     // ---- set-up -------------------------------------------------------------------------
-    //- Add grains; returns the index of the first (indices count in add order from 0).
+    //- Add grains; returns the index of the first (indices count in add order from 0). With a
+    //- Decomposition (Parameters::decomposition) the call is collective: every rank adds its
+    //- own grains (any, maybe none; they move to their owners at the first step), indices
+    //- count rank 0's first, and the return is this rank's first.
     int addGrains(const std::vector<GrainInit>& grains);
     int addGrain(const GrainInit& grain) { return addGrains({grain}); }
     //- Add a wall; returns its index.

@@ -25,7 +25,9 @@ class Engine
 public:
     virtual ~Engine() = default;
 
-    virtual void addGrains(const std::vector<GrainInit>& grains) = 0;
+    //- Returns the index of the first grain added (with a decomposition: this rank's first; the
+    //- call is collective, every rank adds its own grains, maybe none).
+    virtual int addGrains(const std::vector<GrainInit>& grains) = 0;
     virtual int addWall(const WallSpec& wall) = 0;
     virtual void setWallMotion(int wall, const WallSpec& spec) = 0;
     virtual void setWallStress(int wall, double normalStress) = 0;

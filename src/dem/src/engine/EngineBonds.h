@@ -131,6 +131,7 @@ void EngineImpl<Exec>::setGrainVelocities(const std::vector<int>& indices,
                                           const std::array<double, 3>& velocity,
                                           const std::array<double, 3>& angularVelocity)
 {
+    refuseDecomposed("setGrainVelocities");
     const int n = grains_.size();
     const std::vector<int> id = grains_.hostInt(fId);
     std::vector<int> internal(n);

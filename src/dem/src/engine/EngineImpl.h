@@ -12,6 +12,7 @@
 #include "engine/BondStorage.h"
 #include "engine/Engine.h"
 #include "engine/GrainStorage.h"
+#include "engine/HaloState.h"
 #include "engine/PairStorage.h"
 #include "kernels/CouplingKernels.h"
 #include "kernels/DiagnosticKernels.h"
@@ -51,10 +52,16 @@ public:
     explicit EngineImpl(const Parameters& p) : params_(p)
     {
         grains_.setCapsulePath(p.bonds.enabled); // bonds take the capsule forms
+        if (p.decomposition.rankCount() > 1)
+        {
+            halo_ = std::make_unique<HaloState<Exec>>();
+            halo_->comm = makeWorldCommunicator(p.decomposition.rankCount());
+            halo_->boxes = RankBoxes(p);
+        }
     }
 
     // ---- set-up ---------------------------------------------------------------------------
-    void addGrains(const std::vector<GrainInit>& grains) override;
+    int addGrains(const std::vector<GrainInit>& grains) override;
     int addWall(const WallSpec& wall) override
     {
         if (walls_.size() >= std::size_t(kMaxWalls))
@@ -104,10 +111,9 @@ public:
     // ---- stepping -------------------------------------------------------------------------
     void step(int nSteps) override
     {
-        const int n = grains_.size();
         const double dt = params_.timeStep;
         const double halfSkin = 0.5 * params_.neighbourSkin;
-        if (n > 0 && forcesStale_)
+        if (forcesStale_ && (halo_ ? halo_->addedGrains > 0 : grains_.size() > 0))
             computeInitialForces();
         if (nSteps <= 0)
             return;
@@ -116,22 +122,26 @@ public:
         double moved2 = 0.0;
         withShapes(
             [&](auto shapes) {
-                moved2 = exec_.maxOf(n, KickDrift<decltype(shapes)>{grains_.view(), dt});
+                moved2 =
+                    exec_.maxOf(grains_.size(), KickDrift<decltype(shapes)>{grains_.view(), dt});
             });
+        moved2 = globalMax(moved2); // all ranks rebuild together
         stopIfNotFinite(moved2);
         wallsKickDrift(dt);
         for (int s = 0; s < nSteps; ++s)
         {
             if (needRebuild_ || moved2 > halfSkin * halfSkin)
             {
-                Exec::forEach(n, UnpackGrains{grains_.view()});
+                Exec::forEach(grains_.size(), UnpackGrains{grains_.view()});
                 rebuild();
             }
+            else if (halo_)
+                refreshGhosts();
             if (formationDue())
                 formBonds();
             computeForces(dt);
             const bool last = s + 1 == nSteps;
-            moved2 = gatherKick(dt, dt, !last);
+            moved2 = globalMax(gatherKick(dt, dt, !last));
             stopIfNotFinite(moved2);
             wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
@@ -139,27 +149,37 @@ public:
             time_ += dt;
             ++steps_;
         }
+        if (halo_) // the ghosts' fields as their owners' at the end of the call (read-backs)
+        {
+            refreshGhosts();
+            Exec::forEach(grains_.size(), UnpackGrains{grains_.view()});
+        }
     }
 
     // ---- read-back (EngineIo.h) -------------------------------------------------------------
-    std::size_t grainCount() const override { return std::size_t(grains_.size()); }
+    //- With a decomposition: the grains of all ranks (each counted by its owner).
+    std::size_t grainCount() const override
+    {
+        return halo_ ? std::size_t(std::llround(globalSum(double(ownedCount()))))
+                     : std::size_t(grains_.size());
+    }
     double minimumMass() const override;
     GrainData grains() const override;
     int wallCount() const override { return int(walls_.size()); }
     WallData wall(int wall) const override;
     double prescribedGrainForceX() const override
     {
-        return exec_.sumOf(grains_.size(), PrescribedForceX{self().grains_.view()});
+        return globalSum(exec_.sumOf(grains_.size(), PrescribedForceX{self().grains_.view()}));
     }
     double prescribedGrainImpulseX() const override
     {
-        return exec_.sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)});
+        return globalSum(exec_.sumOf(grains_.size(), ComponentOf{self().grains_.real(fImpulseX)}));
     }
     std::size_t contactCount() const override;
     GrainOverlap largestOverlap() override;
     double maximumRadius() const override
     {
-        return exec_.maxOf(grains_.size(), ComponentOf{self().grains_.real(fRadius)});
+        return globalMax(exec_.maxOf(grains_.size(), ComponentOf{self().grains_.real(fRadius)}));
     }
     std::size_t pairCount() const override { return std::size_t(pairs_.count()); }
     std::size_t rebuildCount() const override { return rebuilds_; }
@@ -188,6 +208,21 @@ public:
     void importState(const SystemState& state) override;
 
 private:
+    // ---- over MPI ranks (EngineHalo.h) --------------------------------------------------------
+    double globalMax(double v) const { return halo_ ? halo_->comm->max(v) : v; }
+    double globalSum(double v) const { return halo_ ? halo_->comm->sum(v) : v; }
+    int ownedCount() const { return grains_.size() - (halo_ ? halo_->ghostCount : 0); }
+    //- Throw for a call that a decomposed engine does not offer yet.
+    void refuseDecomposed(const char* what) const;
+    //- Before a rebuild: migration to the new owners and the ghost sets afresh.
+    void redistribute();
+    //- After the rebuild's TransferHistory: the histories that came with arrived grains.
+    void restoreArrivedHistories();
+    //- After the rebuild's sort: the internal indices of the per-step exchange.
+    void indexGhostExchange();
+    //- After every drift (no rebuild): the owners' step state onto the ghosts.
+    void refreshGhosts();
+
     // Read-back kernels need non-const views of storage they do not modify.
     EngineImpl& self() const { return const_cast<EngineImpl&>(*this); }
 
@@ -380,10 +415,11 @@ private:
     double wallGrainForce(int w) const
     {
         EngineImpl& e = self();
-        return exec_.sumOf(
+        // Ghosts hold zero wall loads (their owners sum them).
+        return globalSum(exec_.sumOf(
             grains_.size(),
             WallForceOf{e.grains_.real(fWallState),
-                        grains_.hasCapsules() ? e.grains_.real(fWallStateEnd) : nullptr, w});
+                        grains_.hasCapsules() ? e.grains_.real(fWallStateEnd) : nullptr, w}));
     }
 
     //- The accelerations of the stress-controlled and free walls from the grains' forces on
@@ -422,11 +458,9 @@ private:
     //- Forces of freshly added grains, so the first half kick is second-order too.
     void computeInitialForces()
     {
-        const int n = grains_.size();
-        rebuild();
-        Exec::forEach(n, PackGrains{grains_.view()});
+        rebuild(); // with a decomposition: the grains go to their owners first
+        Exec::forEach(grains_.size(), PackGrains{grains_.view()});
         computeForces(0.0);
-        (void)n;
         gatherKick(0.0, 0.0, false);
         forcesStale_ = false;
         accelerateWalls(); // so the walls' first half kick is second-order too
@@ -527,6 +561,8 @@ private:
     mutable Vec<double> overlapScratch_, depthScratch_;
     mutable Vec<int> contactScratch_;
     FluidLoadView fluid_;
+    //- Over MPI ranks only (Parameters::decomposition); null on one process.
+    std::unique_ptr<HaloState<Exec>> halo_;
     bool needRebuild_ = true;
     bool forcesStale_ = true;
     int grainsAtLastBuild_ = 0;
@@ -539,5 +575,6 @@ private:
 } // namespace dem
 
 #include "engine/EngineIo.h"
+#include "engine/EngineHalo.h"
 #include "engine/EngineNeighbours.h"
 #include "engine/EngineBonds.h"

@@ -71,10 +71,13 @@ inline Vector3d angularMomentum(const Quaterniond& q, const Vector3d& inertia,
 } // namespace shapeDetail
 
 template <class Exec>
-void EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
+int EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
 {
     using namespace shapeDetail;
-    const int k = int(grains.size()), first = grains_.size();
+    const int k = int(grains.size());
+    // Ids count in add order over all ranks (rank 0's grains of a call first).
+    const int first =
+        halo_ ? int(halo_->addedGrains + halo_->comm->exclusiveSum(k)) : grains_.size();
     std::array<std::vector<double>, kRealFieldCount> reals;
     std::array<std::vector<int>, kIntFieldCount> ints;
     for (int f = 0; f < kRealFieldCount; ++f)
@@ -129,12 +132,16 @@ void EngineImpl<Exec>::addGrains(const std::vector<GrainInit>& grains)
     forcesStale_ = true;
     if (fluid_.active) // the new grains feel the fluid set before they came
         storeFluidLoads();
+    if (halo_)
+        halo_->addedGrains += std::llround(halo_->comm->sum(double(k)));
+    return first;
 }
 
 template <class Exec>
 void EngineImpl<Exec>::setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                                      double vy)
 {
+    refuseDecomposed("setGrainFlags");
     const int n = grains_.size();
     const std::vector<int> id = grains_.hostInt(fId);
     std::vector<int> internal(n);
@@ -162,13 +169,15 @@ double EngineImpl<Exec>::minimumMass() const
     const int n = grains_.size();
     const double* inverseMass = self().grains_.real(fInverseMass);
     if (!grains_.hasCapsules())
-        return 1.0 / thrust::reduce(exec_.policy(), inverseMass, inverseMass + n, 0.0, MaxOp());
-    return 1.0 / exec_.maxOf(n, EffectiveInverseMass{self().grains_.view()});
+        return 1.0 / globalMax(thrust::reduce(exec_.policy(), inverseMass, inverseMass + n, 0.0,
+                                              MaxOp()));
+    return 1.0 / globalMax(exec_.maxOf(n, EffectiveInverseMass{self().grains_.view()}));
 }
 
 template <class Exec>
 GrainOverlap EngineImpl<Exec>::largestOverlap()
 {
+    refuseDecomposed("largestOverlap");
     const int n = grains_.size();
     GrainOverlap out;
     if (n < 2)
@@ -220,13 +229,32 @@ GrainData EngineImpl<Exec>::grains() const
         thrust::copy(perGrain.begin(), perGrain.end(), contacts.begin());
     }
     GrainData out;
+    // Where each grain goes in the read-back: its add-order index, or over MPI ranks its place
+    // among this rank's owned grains in add order (-1: a ghost, not read back).
+    std::vector<int> slot = id;
+    int m = n;
+    if (halo_)
+    {
+        std::vector<int> owned;
+        for (int i = 0; i < n; ++i)
+            if (flag[i] != kFlagGhost)
+                owned.push_back(id[i]);
+        std::sort(owned.begin(), owned.end());
+        m = int(owned.size());
+        for (int i = 0; i < n; ++i)
+            slot[i] =
+                flag[i] == kFlagGhost
+                    ? -1
+                    : int(std::lower_bound(owned.begin(), owned.end(), id[i]) - owned.begin());
+    }
     // component-blocked internal order -> interleaved add order
     auto toAddOrder = [&](const std::vector<double>& h, std::vector<double>& dest)
     {
-        dest.resize(3 * std::size_t(n));
+        dest.resize(3 * std::size_t(m));
         for (int i = 0; i < n; ++i)
-            for (int d = 0; d < 3; ++d)
-                dest[3 * std::size_t(id[i]) + d] = h[std::size_t(d) * n + i];
+            if (slot[i] >= 0)
+                for (int d = 0; d < 3; ++d)
+                    dest[3 * std::size_t(slot[i]) + d] = h[std::size_t(d) * n + i];
     };
     auto vector3 = [&](int field, std::vector<double>& dest)
     { toAddOrder(grains_.hostReal(field), dest); };
@@ -247,21 +275,25 @@ GrainData EngineImpl<Exec>::grains() const
     }
     std::vector<double> origin;
     vector3(fOrigin, origin);
-    out.displacement.resize(3 * std::size_t(n));
+    out.displacement.resize(3 * std::size_t(m));
     const std::vector<double> radius = grains_.hostReal(fRadius),
                               inverseMass = grains_.hostReal(fInverseMass),
                               halfLength = grains_.hostReal(fCoreHalfLength),
                               orientation = grains_.hostReal(fOrientation);
-    out.radius.resize(n);
-    out.coreHalfLength.resize(n);
-    out.orientation.resize(4 * std::size_t(n));
-    out.volume.resize(n);
-    out.mass.resize(n);
-    out.contactCount.resize(n);
-    out.flag.resize(n);
+    out.radius.resize(m);
+    out.coreHalfLength.resize(m);
+    out.orientation.resize(4 * std::size_t(m));
+    out.volume.resize(m);
+    out.mass.resize(m);
+    out.contactCount.resize(m);
+    out.flag.resize(m);
+    out.id.resize(m);
     for (int i = 0; i < n; ++i)
     {
-        const int u = id[i];
+        const int u = slot[i];
+        if (u < 0)
+            continue;
+        out.id[u] = id[i];
         out.radius[u] = radius[i];
         out.coreHalfLength[u] = halfLength[i];
         for (int c = 0; c < 4; ++c)
@@ -309,9 +341,23 @@ std::size_t EngineImpl<Exec>::contactCount() const
     if (grainsAtLastBuild_ != n || needRebuild_)
         return 0;
     EngineImpl& e = self();
-    return std::size_t(
-        std::llround(exec_.sumOf(n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(),
-                                                  false, nullptr, grains_.hasCapsules()})));
+    if (!halo_)
+        return std::size_t(
+            std::llround(exec_.sumOf(n, TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(),
+                                                      false, nullptr, grains_.hasCapsules()})));
+    // Over MPI ranks: each owned grain's touching pairs, both sides, summed over all ranks,
+    // count every pair twice (a pair across a boundary once on each of its two ranks).
+    Vec<int>& perGrain = contactScratch_;
+    perGrain.resize(n);
+    Exec::forEach(n,
+                  TouchingPairs{e.grains_.view(), e.pairs_.view(), boxView(), true,
+                                thrust::raw_pointer_cast(perGrain.data()), grains_.hasCapsules()});
+    const std::vector<int> counts = haloDetail::toHost(perGrain), flag = grains_.hostInt(fFlag);
+    double owned = 0.0;
+    for (int i = 0; i < n; ++i)
+        if (flag[i] != kFlagGhost)
+            owned += counts[i];
+    return std::size_t(std::llround(0.5 * globalSum(owned)));
 }
 
 inline GridView gridView(const UniformGrid& grid, const char* caller)
@@ -363,6 +409,7 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
                                double* predictedPorosity, double* meanVelocity,
                                double* solidVolume) const
 {
+    refuseDecomposed("deposit");
     const GridView g = fluidGridView(grid, "deposit");
     const int n = grains_.size();
     const long cells = g.cellCount();
@@ -410,6 +457,7 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
 template <class Exec>
 void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const FluidFields& fluid)
 {
+    refuseDecomposed("setFluid");
     const GridView g = fluidGridView(grid, "setFluid");
     if (!fluid.forceDensity)
         throw Error("setFluid: forceDensity is null");
@@ -478,6 +526,7 @@ GrainFluidForce EngineImpl<Exec>::grainFluidForce() const
 template <class Exec>
 void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* reaction) const
 {
+    refuseDecomposed("depositFluidReaction");
     const GridView g = fluidGridView(grid, "depositFluidReaction");
     const long values = 3 * g.cellCount();
     Vec<double>& out = reactionScratch_;

@@ -82,6 +82,26 @@ CellGridView EngineImpl<Exec>::cellGrid()
 template <class Exec>
 void EngineImpl<Exec>::rebuild()
 {
+    if (halo_)
+    {
+        redistribute();
+        if (grains_.size() == 0) // nothing near this rank's box: an empty list
+        {
+            pairs_.swap(oldPairs_);
+            pairs_.start.assign(1, 0);
+            pairs_.incomingStart.assign(1, 0);
+            pairs_.owner.clear();
+            pairs_.partner.clear();
+            pairs_.incomingPair.clear();
+            pairs_.history.clear();
+            pairs_.sizeLoads(reactionComponents());
+            grainsAtLastBuild_ = 0;
+            needRebuild_ = false;
+            ++rebuilds_;
+            indexGhostExchange();
+            return;
+        }
+    }
     const int n = grains_.size();
     const BoxView box = boxView();
     // The grid before the wrap: its bounds on the non-periodic sides do not change with it,
@@ -139,8 +159,23 @@ void EngineImpl<Exec>::rebuild()
                                     thrust::raw_pointer_cast(pairs_.owner.data()),
                                     thrust::raw_pointer_cast(pairs_.partner.data())});
 
-    Exec::forEach(n, TransferHistory{pairs_.view(), oldPairs_.view(),
-                                     thrust::raw_pointer_cast(order_.data()), grainsAtLastBuild_});
+    // The previous index of each grain: its index before the sort, or over MPI ranks the one it
+    // had before redistribute (large for a grain new here).
+    const int* previous = thrust::raw_pointer_cast(order_.data());
+    if (halo_)
+    {
+        halo_->previous.resize(n);
+        const std::vector<int>& before = halo_->previousBeforeSort;
+        std::vector<int> sorted = haloDetail::toHost(order_);
+        for (int& i : sorted)
+            i = before[std::size_t(i)];
+        thrust::copy(sorted.begin(), sorted.end(), halo_->previous.begin());
+        previous = thrust::raw_pointer_cast(halo_->previous.data());
+    }
+    Exec::forEach(n,
+                  TransferHistory{pairs_.view(), oldPairs_.view(), previous, grainsAtLastBuild_});
+    if (halo_)
+        restoreArrivedHistories();
 
     // Transposed list: for each grain the pairs it is the partner of.
     Exec::forEach(n, CountNeighbours{search, false, counts});
@@ -170,6 +205,8 @@ void EngineImpl<Exec>::rebuild()
     ++rebuilds_;
     if (params_.bonds.enabled)
         indexBonds();
+    if (halo_)
+        indexGhostExchange();
 }
 
 } // namespace detail

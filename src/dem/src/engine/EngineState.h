@@ -70,6 +70,7 @@ inline SystemState withWallLayoutOf6(const SystemState& old)
 template <class Exec>
 SystemState EngineImpl<Exec>::exportState() const
 {
+    refuseDecomposed("exportState (restart)");
     using namespace stateDetail;
     SystemState s;
     for (int f = 0; f < kRealFieldCount; ++f)
@@ -130,6 +131,7 @@ SystemState EngineImpl<Exec>::exportState() const
 template <class Exec>
 void EngineImpl<Exec>::importState(const SystemState& s)
 {
+    refuseDecomposed("importState (restart)");
     using namespace stateDetail;
     if (s.integers.find("walls.layout") == s.integers.end())
         return importState(withWallLayoutOf6(s));

@@ -418,6 +418,9 @@ struct GatherKick
     DEM_HD double operator()(int j) const
     {
         grainLoads.prefetchWallState(j + GrainForceKernel<Shapes, WallLaw>::kWallPrefetchDistance);
+        const int flag = g.flag[j];
+        if (flag == kFlagGhost) // its owner sums its loads and moves it
+            return 0.0;
         Vector3d force, torque;
         grainLoads.add(j, force, torque);
         // Pairs j owns, then pairs j is the partner of (open pairs read zero loads), in one
@@ -446,7 +449,6 @@ struct GatherKick
         }
         if constexpr (Shapes::kBonds)
             bonds.add(j, force, torque);
-        const int flag = g.flag[j];
         if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
             g.impulseX[j] += dt * force.x();
         double* vw = g.packedVelocities + 8L * j;

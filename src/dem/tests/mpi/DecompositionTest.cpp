@@ -1,0 +1,305 @@
+// DecompositionTest.cpp
+// The DEM System split over two MPI ranks (Parameters::decomposition), run by ctest as
+// `mpiexec -n 2 demMpiTests` (main below): every rank runs every test body, and a test fails
+// when it fails on any rank. Assertions come after the collective calls (EXPECT, not ASSERT,
+// where a rank leaving early would leave the other waiting).
+//   - A sheared packing whose grains cross the rank boundaries for more than 100 neighbour
+//     rebuilds keeps every grain exactly once, its mass, and its momentum to round-off.
+//   - A dense packing with pairs across the boundaries follows the one-process run within the
+//     growth of round-off (bound measured as BackendComparisonTest does); so does one whose
+//     grains all lie in one rank's box (the other owns nothing).
+//   - Misuse is refused with messages that name the entry: rank counts, bonds, calls not
+//     available yet.
+// (The benchmark packing on 1 and 2 ranks: tests/mpi/test_dem_mpi.py, through demBench.)
+#include "PackingFile.h"
+#include "TestSupport.h"
+#include "dem/Mpi.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <random>
+
+using namespace demTest;
+
+namespace
+{
+
+const dem::MpiSession* mpi = nullptr;
+
+//- The bottom grains of the benchmark packing (z < zTop), in its periodic box of side L.
+dem::Packing bottomOfBenchmarkPacking(double zTop)
+{
+    dem::Packing all = dem::readPacking(DEM_BENCH_PACKINGS "/packing_10000.txt", 2600.0);
+    dem::Packing out = all;
+    out.grains.clear();
+    for (const dem::GrainInit& g : all.grains)
+        if (g.position[2] < zTop)
+            out.grains.push_back(g);
+    return out;
+}
+
+//- Benchmark contact law (bench/README.md), no gravity, periodic in x and y, no walls.
+dem::Parameters shearParameters(dem::Backend backend, double length, double skin)
+{
+    dem::Parameters p;
+    p.grainGrain = {1.16e9, 1.16e9, 0.0, 0.0, 0.5};
+    p.grainWall = p.grainGrain;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.boxLower = {0.0, 0.0};
+    p.boxUpper = {length, length};
+    p.periodic = {true, true};
+    p.timeStep = 2.14e-7;
+    p.neighbourSkin = skin;
+    p.backend = backend;
+    p.threads = 1;
+    return p;
+}
+
+//- The grains of rank r's share when each rank adds a contiguous block (add order kept).
+std::vector<dem::GrainInit> blockOf(const std::vector<dem::GrainInit>& grains)
+{
+    const std::size_t n = grains.size(), r = std::size_t(mpi->rank()),
+                      ranks = std::size_t(mpi->size());
+    return {grains.begin() + long(n * r / ranks), grains.begin() + long(n * (r + 1) / ranks)};
+}
+
+//- Sum over all ranks of a per-grain quantity of the grains each rank owns.
+template <class F>
+double sumOwned(const dem::GrainData& g, F f)
+{
+    double s = 0.0;
+    for (std::size_t i = 0; i < g.mass.size(); ++i)
+        s += f(i);
+    return mpi->sum(s);
+}
+
+class Decomposition : public BackendTest
+{
+};
+
+// A shear flow v_x = U (z - z_mid) / (h / 2) through a dense periodic packing: the grains cross
+// the cuts at x = 0 and x = L/2 all the time. Invariants: each grain owned by exactly one rank
+// (count, sum of ids and of their squares, exact in doubles), its mass (a record field that
+// travels), and the momentum. Momentum bound: every step rounds each grain's two kicks (a
+// relative change of at most eps |m v| each) and the two ranks of a pair across a boundary
+// evaluate its force separately (forces differing in the last bits, each a change of at most
+// eps |m dv| per step, below the kicks' eps |m v| while |dv| << |v|); so after S steps
+// |P(S) - P(0)| <= 4 eps S max_t sum_i m_i |v_i|. Summed with random signs the actual drift is
+// ~sqrt(S N) smaller. A force lost at a boundary, a ghost one step stale or a grain dropped would
+// change P by ~k |dx| dt ~ 1e-4 N s per contact and step, far above this bound (~1e-9 N s).
+TEST_P(Decomposition, ShearedPackingKeepsGrainsMassAndMomentum)
+{
+    const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
+    const double U = 20.0, skin = 8e-4; // a rebuild every ~90 steps
+    double zLow = HUGE_VAL, zHigh = -HUGE_VAL;
+    for (const dem::GrainInit& g : packing.grains)
+    {
+        zLow = std::min(zLow, g.position[2]);
+        zHigh = std::max(zHigh, g.position[2]);
+    }
+    std::vector<dem::GrainInit> grains = packing.grains;
+    for (dem::GrainInit& g : grains)
+        g.velocity = {U * (g.position[2] - 0.5 * (zLow + zHigh)) / (0.5 * (zHigh - zLow)), 0.0,
+                      0.0};
+    const long n = long(grains.size());
+    double mass0 = 0.0;
+    for (const dem::GrainInit& g : grains)
+        mass0 += 2600.0 * sphereVolume(g.radius);
+
+    dem::Parameters p = shearParameters(GetParam(), packing.length, skin);
+    p.decomposition.ranks = {2, 1};
+    dem::System system(p);
+    system.addGrains(blockOf(grains));
+    system.step(0);
+    const dem::GrainData start = system.grains();
+    std::vector<int> ownedAtStart = start.id;
+    auto momentum = [&](const dem::GrainData& g, int d)
+    { return sumOwned(g, [&](std::size_t i) { return g.mass[i] * g.velocity[3 * i + d]; }); };
+    auto absoluteMomentum = [&](const dem::GrainData& g)
+    { return sumOwned(g, [&](std::size_t i) { return g.mass[i] * norm(at(g.velocity, i)); }); };
+    const std::array<double, 3> p0 = {momentum(start, 0), momentum(start, 1), momentum(start, 2)};
+    double largestAbsolute = absoluteMomentum(start);
+    long steps = 0;
+    while (system.neighbourRebuildCount() < 110 && steps < 40000)
+    {
+        system.step(250);
+        steps += 250;
+        largestAbsolute = std::max(largestAbsolute, absoluteMomentum(system.grains()));
+    }
+    const dem::GrainData end = system.grains();
+    const double count = mpi->sum(double(end.id.size()));
+    const double idSum = sumOwned(end, [&](std::size_t i) { return double(end.id[i]); });
+    const double idSquares =
+        sumOwned(end, [&](std::size_t i) { return double(end.id[i]) * double(end.id[i]); });
+    const double mass = sumOwned(end, [&](std::size_t i) { return end.mass[i]; });
+    std::vector<int> ownedAtEnd = end.id;
+    std::sort(ownedAtEnd.begin(), ownedAtEnd.end());
+    std::vector<int> changed;
+    std::set_difference(ownedAtEnd.begin(), ownedAtEnd.end(), ownedAtStart.begin(),
+                        ownedAtStart.end(), std::back_inserter(changed));
+    const double arrived = mpi->sum(double(changed.size()));
+    const double bound =
+        4.0 * std::numeric_limits<double>::epsilon() * double(steps) * largestAbsolute;
+    std::array<double, 3> drift{};
+    for (int d = 0; d < 3; ++d)
+        drift[d] = momentum(end, d) - p0[d];
+
+    EXPECT_GE(system.neighbourRebuildCount(), 100u);
+    EXPECT_GT(arrived, 0.0) << "the shear should move grains to the other rank";
+    EXPECT_EQ(count, double(n));
+    EXPECT_EQ(system.grainCount(), std::size_t(n));
+    EXPECT_EQ(idSum, double(n) * double(n - 1) / 2.0);
+    EXPECT_EQ(idSquares, double(n - 1) * double(n) * double(2 * n - 1) / 6.0);
+    EXPECT_NEAR(mass, mass0, 64.0 * std::numeric_limits<double>::epsilon() * mass0);
+    for (int d = 0; d < 3; ++d)
+        EXPECT_LE(std::fabs(drift[d]), bound)
+            << "momentum component " << d << " after " << steps << " steps";
+    if (mpi->rank() == 0)
+        std::printf("  %ld grains, %ld steps, %zu rebuilds, %.0f changed rank; momentum drift "
+                    "(%.3g %.3g %.3g) N s, bound %.3g N s (sum m|v| up to %.4g N s)\n",
+                    n, steps, system.neighbourRebuildCount(), arrived, drift[0], drift[1], drift[2],
+                    bound, largestAbsolute);
+}
+
+// Pairs across the boundaries: forces of such a pair are evaluated on both ranks (in either
+// order, summed in another order), so the split run leaves the one-process trajectory by
+// round-off, which grows in a dense packing. The bound is that growth, measured on one process
+// as BackendComparisonTest does: a second run starts from positions moved by
+// eta0 = steps x 4 ulp(x_max) in random directions, the sum of every step's possible difference.
+// The second case puts all grains on one side, away from the cuts: rank 1 owns nothing and still
+// takes part in every collective call.
+TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
+{
+    const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
+    for (const bool oneSided : {false, true})
+    {
+        std::vector<dem::GrainInit> grains;
+        for (const dem::GrainInit& g : packing.grains)
+            if (!oneSided ||
+                (g.position[0] > 0.05 * packing.length && g.position[0] < 0.4 * packing.length))
+                grains.push_back(g);
+        const int steps = 1500;
+        dem::Parameters p = shearParameters(GetParam(), packing.length, 2e-3);
+        p.gravity = {0.0, 0.0, -9.81};
+        p.grainGrain.normalDamping = p.grainGrain.tangentialDamping = 0.0;
+        auto run = [&](const std::vector<dem::GrainInit>& start, bool split, double& wallForce,
+                       double& contacts)
+        {
+            dem::Parameters q = p;
+            if (split)
+                q.decomposition.ranks = {2, 1};
+            dem::System s(q);
+            s.addGrains(split ? blockOf(start) : start);
+            s.addWall(dem::WallSpec{});
+            s.step(steps);
+            wallForce = s.wall(0).grainForce;
+            contacts = double(s.contactCount());
+            return s.grains();
+        };
+        const double xMax = packing.length;
+        const double eta0 = steps * 4.0 * (std::nextafter(xMax, 2.0 * xMax) - xMax);
+        std::vector<dem::GrainInit> perturbed = grains;
+        std::mt19937 random(7);
+        std::normal_distribution<double> normal;
+        for (dem::GrainInit& g : perturbed)
+        {
+            Vec3 e{normal(random), normal(random), normal(random)};
+            const double length = norm(e);
+            for (int d = 0; d < 3; ++d)
+                g.position[d] += eta0 * e[d] / length;
+        }
+        double wallForce = 0.0, contacts = 0.0, splitWallForce = 0.0, splitContacts = 0.0, unused;
+        const dem::GrainData reference = run(grains, false, wallForce, contacts),
+                             moved = run(perturbed, false, unused, unused),
+                             split = run(grains, true, splitWallForce, splitContacts);
+        double bound = 0.0, largest = 0.0;
+        for (std::size_t i = 0; i < reference.mass.size(); ++i)
+            bound = std::max(bound, norm(sub(at(moved.position, i), at(reference.position, i))));
+        for (std::size_t k = 0; k < split.id.size(); ++k)
+            largest = std::max(
+                largest,
+                norm(sub(at(split.position, k), at(reference.position, std::size_t(split.id[k])))));
+        largest = mpi->max(largest);
+        const double owned = double(split.id.size());
+        EXPECT_LE(largest, bound) << (oneSided ? "one-sided" : "whole bed");
+        EXPECT_EQ(mpi->sum(owned), double(grains.size()));
+        if (oneSided)
+            EXPECT_EQ(mpi->min(owned), 0.0) << "one rank should own nothing";
+        // The wall's load and the contacts: the same terms, summed per rank and then over the
+        // ranks, from positions within the bound (far below the overlaps, ~1e-6 m).
+        EXPECT_NEAR(splitWallForce, wallForce, 1e-6 * std::fabs(wallForce));
+        EXPECT_EQ(splitContacts, contacts);
+        if (mpi->rank() == 0)
+            std::printf("  %s: %zu grains, %d steps: largest position difference split vs one "
+                        "process %.3g m, bound from eta0 = %.3g m: %.3g m; contacts %.0f / %.0f, "
+                        "wall load %.10g / %.10g N\n",
+                        oneSided ? "one-sided" : "whole bed", reference.mass.size(), steps, largest,
+                        eta0, bound, splitContacts, contacts, splitWallForce, wallForce);
+    }
+}
+
+TEST_P(Decomposition, MisuseIsRefusedWithAClearMessage)
+{
+    dem::Parameters p = shearParameters(GetParam(), 1.0, 1e-3);
+    auto message = [&](const dem::Parameters& q, auto&& use)
+    {
+        try
+        {
+            dem::System s(q);
+            use(s);
+        }
+        catch (const dem::Error& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    auto nothing = [](dem::System&) {};
+    p.decomposition.ranks = {3, 1};
+    EXPECT_NE(message(p, nothing).find("needs 3 MPI ranks, but mpirun started 2"),
+              std::string::npos)
+        << message(p, nothing);
+    p.decomposition.ranks = {0, 2};
+    EXPECT_NE(message(p, nothing).find("decomposition.ranks[0] = 0 is invalid"), std::string::npos)
+        << message(p, nothing);
+    p.decomposition.ranks = {2, 1};
+    dem::Parameters bonded = p;
+    bonded.bonds.enabled = true;
+    bonded.bonds.youngsModulus = 1e9;
+    EXPECT_NE(message(bonded, nothing).find("bonds with a decomposition"), std::string::npos)
+        << message(bonded, nothing);
+    dem::UniformGrid grid;
+    std::vector<double> field(3, 0.0);
+    const std::string fluid =
+        message(p, [&](dem::System& s) { s.setFluid(grid, dem::FluidFields{field.data()}); });
+    EXPECT_NE(fluid.find("setFluid is not available yet with a decomposition"), std::string::npos)
+        << fluid;
+    const std::string restart = message(p, [](dem::System& s) { s.exportState(); });
+    EXPECT_NE(restart.find("exportState (restart) is not available yet"), std::string::npos)
+        << restart;
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, Decomposition,
+                         ::testing::Values(dem::Backend::cpu, dem::Backend::cuda),
+                         [](const auto& info)
+                         { return info.param == dem::Backend::cpu ? "cpu" : "cuda"; });
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    dem::MpiSession session(&argc, &argv);
+    mpi = &session;
+    // The test list (ctest's discovery) from rank 0 only; a run prints from every rank, so a
+    // failure on rank 1 is seen.
+    for (int a = 1; a < argc; ++a)
+        if (std::strcmp(argv[a], "--gtest_list_tests") == 0 && session.rank() != 0 &&
+            !std::freopen("/dev/null", "w", stdout))
+            return 1;
+    ::testing::InitGoogleTest(&argc, argv);
+    const int failed = RUN_ALL_TESTS();
+    // A test that failed on any rank fails the run (every rank's exit status).
+    return session.max(double(failed)) > 0.0 ? 1 : 0;
+}
