@@ -89,9 +89,8 @@ public:
         return rank_ == 0 ? 0 : out; // MPI leaves rank 0's result undefined
     }
 
-    std::vector<std::vector<double>>
-    exchange(const std::vector<std::vector<double>>& send,
-             const std::vector<long>* receiveSizes) const override
+    std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& send,
+                                              const std::vector<long>* receiveSizes) const override
     {
         if (int(send.size()) != size_)
             throw Error("internal error: exchange needs one buffer per rank");

@@ -142,8 +142,9 @@ template <class Exec>
 void EngineImpl<Exec>::refuseDecomposed(const char* what) const
 {
     if (halo_)
-        throw Error(std::string(what) + " is not available yet with a decomposition over MPI "
-                                        "ranks (Parameters::decomposition " +
+        throw Error(std::string(what) +
+                    " is not available yet with a decomposition over MPI "
+                    "ranks (Parameters::decomposition " +
                     std::to_string(params_.decomposition.ranks[0]) + " x " +
                     std::to_string(params_.decomposition.ranks[1]) +
                     "); run it on one process (decomposition 1 x 1)");
@@ -184,7 +185,8 @@ void EngineImpl<Exec>::redistribute()
     // Their pairs' histories, as seen from the leaving grain: the old owner listed every pair
     // of its grains (a pair listed nowhere here has not touched since the last rebuild).
     std::unordered_map<int, std::vector<double>> leavingPairs;
-    const bool listed = grainsAtLastBuild_ > 0 && long(pairs_.start.size()) == grainsAtLastBuild_ + 1;
+    const bool listed =
+        grainsAtLastBuild_ > 0 && long(pairs_.start.size()) == grainsAtLastBuild_ + 1;
     if (listed)
     {
         const std::vector<int> owner = haloDetail::toHost(pairs_.owner),
@@ -230,7 +232,8 @@ void EngineImpl<Exec>::redistribute()
         for (std::size_t at = 0; at < message.size();)
         {
             const int arrivedId = int(message[at + std::size_t(HostGrains::idOffset())]);
-            owned.insert(owned.end(), message.begin() + long(at), message.begin() + long(at) + width);
+            owned.insert(owned.end(), message.begin() + long(at),
+                         message.begin() + long(at) + width);
             at += std::size_t(width);
             const int pairsOf = int(message[at++]);
             h.arrivedIds.insert(arrivedId);
@@ -362,8 +365,8 @@ void EngineImpl<Exec>::indexGhostExchange()
     internal.reserve(std::size_t(n));
     for (int i = 0; i < n; ++i)
         internal[id[i]] = i;
-    const int width = grains_.hasCapsules() ? GhostStepState::kCapsuleWidth
-                                            : GhostStepState::kSphereWidth;
+    const int width =
+        grains_.hasCapsules() ? GhostStepState::kCapsuleWidth : GhostStepState::kSphereWidth;
     std::vector<int> sendIndex, receiveIndex;
     h.sendOffset.assign(1, 0);
     h.receiveOffset.assign(1, 0);
@@ -411,6 +414,77 @@ void EngineImpl<Exec>::refreshGhosts()
     Exec::forEach(int(received),
                   GhostStepState{grains_.view(), thrust::raw_pointer_cast(h.receiveIndex.data()),
                                  buffer, width, capsules, true});
+}
+
+template <class Exec>
+void EngineImpl<Exec>::exportHalo(SystemState& s) const
+{
+    const HaloState<Exec>& h = *halo_;
+    s.integers["halo.decomposition"] = {h.comm->rank(), h.comm->size(),
+                                        params_.decomposition.ranks[0],
+                                        params_.decomposition.ranks[1]};
+    s.integers["halo.counts"] = {h.addedGrains, h.ghostCount};
+    auto lists = [&](const std::vector<std::vector<int>>& ids, const std::string& name)
+    {
+        std::vector<std::int64_t>& sizes = s.integers[name + "Counts"];
+        std::vector<std::int64_t>& all = s.integers[name];
+        for (const std::vector<int>& list : ids)
+        {
+            sizes.push_back(std::int64_t(list.size()));
+            all.insert(all.end(), list.begin(), list.end());
+        }
+    };
+    lists(h.sentIds, "halo.sentIds");
+    lists(h.ghostIds, "halo.ghostIds");
+}
+
+template <class Exec>
+void EngineImpl<Exec>::importHalo(const SystemState& s)
+{
+    const auto found = s.integers.find("halo.decomposition");
+    if (!halo_)
+    {
+        if (found != s.integers.end())
+            throw Error("importState: the state is one rank's part of a run decomposed over " +
+                        std::to_string(found->second.at(1)) +
+                        " MPI ranks; import it with the same Parameters::decomposition on as "
+                        "many ranks");
+        return;
+    }
+    HaloState<Exec>& h = *halo_;
+    const std::vector<std::int64_t> expected = {h.comm->rank(), h.comm->size(),
+                                                params_.decomposition.ranks[0],
+                                                params_.decomposition.ranks[1]};
+    if (found == s.integers.end() || found->second != expected)
+        throw Error("importState: the state was not written by rank " +
+                    std::to_string(h.comm->rank()) + " of this decomposition (" +
+                    std::to_string(expected[2]) + " x " + std::to_string(expected[3]) +
+                    " boxes); each rank imports the part it wrote, on the same decomposition");
+    const std::vector<std::int64_t>& counts = stateDetail::entry(s.integers, "halo.counts");
+    if (counts.size() != 2)
+        throw Error("importState: 'halo.counts' must have 2 entries");
+    h.addedGrains = counts[0];
+    h.ghostCount = int(counts[1]);
+    auto lists = [&](std::vector<std::vector<int>>& ids, const std::string& name)
+    {
+        const std::vector<std::int64_t>& sizes = stateDetail::entry(s.integers, name + "Counts");
+        const std::vector<std::int64_t>& all = stateDetail::entry(s.integers, name);
+        if (sizes.size() != std::size_t(h.comm->size()))
+            throw Error("importState: '" + name + "Counts' must have one entry per rank");
+        ids.assign(sizes.size(), {});
+        std::size_t at = 0;
+        for (std::size_t r = 0; r < sizes.size(); ++r)
+        {
+            if (at + std::size_t(sizes[r]) > all.size())
+                throw Error("importState: '" + name + "' is shorter than its counts");
+            ids[r].assign(all.begin() + long(at), all.begin() + long(at + sizes[r]));
+            at += std::size_t(sizes[r]);
+        }
+    };
+    lists(h.sentIds, "halo.sentIds");
+    lists(h.ghostIds, "halo.ghostIds");
+    if (grainsAtLastBuild_ == grains_.size()) // the lists as they were (else the next step's
+        indexGhostExchange();                 // rebuild makes them)
 }
 
 } // namespace detail

@@ -222,6 +222,9 @@ private:
     void indexGhostExchange();
     //- After every drift (no rebuild): the owners' step state onto the ghosts.
     void refreshGhosts();
+    //- The decomposed part of exportState / importState (restart on the same decomposition).
+    void exportHalo(SystemState& s) const;
+    void importHalo(const SystemState& s);
 
     // Read-back kernels need non-const views of storage they do not modify.
     EngineImpl& self() const { return const_cast<EngineImpl&>(*this); }

@@ -70,7 +70,6 @@ inline SystemState withWallLayoutOf6(const SystemState& old)
 template <class Exec>
 SystemState EngineImpl<Exec>::exportState() const
 {
-    refuseDecomposed("exportState (restart)");
     using namespace stateDetail;
     SystemState s;
     for (int f = 0; f < kRealFieldCount; ++f)
@@ -100,6 +99,8 @@ SystemState EngineImpl<Exec>::exportState() const
         wallInts.insert(wallInts.end(), {std::int64_t(w.spec.side), std::int64_t(w.spec.mode),
                                          std::int64_t(w.spec.frictional), w.spec.axis});
     }
+    if (halo_) // this rank's part of a decomposed state: its grains, ghosts and exchange lists
+        exportHalo(s);
     s.integers["walls.layout"] = {kMaxWalls}; // grain wall records per grain; 4 per wall int
     s.integers["pairs.historyLayout"] = {kHistoryLayout};
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
@@ -131,7 +132,6 @@ SystemState EngineImpl<Exec>::exportState() const
 template <class Exec>
 void EngineImpl<Exec>::importState(const SystemState& s)
 {
-    refuseDecomposed("importState (restart)");
     using namespace stateDetail;
     if (s.integers.find("walls.layout") == s.integers.end())
         return importState(withWallLayoutOf6(s));
@@ -242,6 +242,7 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     needRebuild_ = counters[3] != 0;
     forcesStale_ = counters[4] != 0;
     oldPairs_ = PairStorage<Exec>();
+    importHalo(s);
     importBonds(s);
     if (fluid_.active) // the imported grains feel the fluid set before
         storeFluidLoads();
