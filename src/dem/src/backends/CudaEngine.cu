@@ -33,6 +33,14 @@ std::unique_ptr<Engine> makeCudaEngine(const Parameters& parameters)
                     (status != cudaSuccess ? cudaGetErrorString(status) : "0 devices") +
                     "); use backend 'cpu' or 'auto'");
     }
+    // Over MPI ranks: one device per rank, the ranks of a node taking its devices in turn.
+    if (parameters.decomposition.rankCount() > 1)
+    {
+        const int device =
+            makeWorldCommunicator(parameters.decomposition.rankCount())->localRank() % count;
+        if (cudaSetDevice(device) != cudaSuccess)
+            throw Error("cudaSetDevice(" + std::to_string(device) + ") failed");
+    }
     return std::make_unique<EngineImpl<CudaExecution>>(parameters);
 }
 

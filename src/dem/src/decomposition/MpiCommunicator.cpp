@@ -80,6 +80,15 @@ public:
     }
     int rank() const override { return rank_; }
     int size() const override { return size_; }
+    int localRank() const override
+    {
+        MPI_Comm node;
+        MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+        int local = 0;
+        MPI_Comm_rank(node, &local);
+        MPI_Comm_free(&node);
+        return local;
+    }
     double sum(double value) const override { return reduce(value, MPI_SUM); }
     double max(double value) const override { return reduce(value, MPI_MAX); }
     long long exclusiveSum(long long value) const override

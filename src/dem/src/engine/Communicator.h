@@ -19,6 +19,8 @@ public:
     virtual ~Communicator() = default;
     virtual int rank() const = 0;
     virtual int size() const = 0;
+    //- This rank's index among the ranks on its node (MPI_COMM_TYPE_SHARED): its GPU.
+    virtual int localRank() const = 0;
     virtual double sum(double value) const = 0;
     virtual double max(double value) const = 0;
     //- Sum of value over the ranks below this one.
