@@ -147,10 +147,6 @@ void checkParameters(const Parameters& p)
         require(p.decomposition.ranks[d] >= 1,
                 d == 0 ? "decomposition.ranks[0]" : "decomposition.ranks[1]",
                 p.decomposition.ranks[d], ">= 1 (boxes along x and y; 1 x 1: one process)");
-    if (p.decomposition.rankCount() > 1 && p.bonds.enabled)
-        throw Error("bonds with a decomposition over MPI ranks are not available yet (bonds "
-                    "crossing a rank boundary do not travel): run bonded systems on one process "
-                    "(decomposition 1 x 1)");
 }
 
 void checkWall(const WallSpec& w, const Parameters& p)

@@ -4,7 +4,8 @@
 // the periodic seam (to round-off) and through a restart (bit for bit); a broken bond is removed
 // and the contact law takes the pair back; a bonded pair gets no contact-law loads; formation
 // (frozenOnContact) bonds every touching pair once with r_b^2 / r_min^2 uniform in areaFraction;
-// addBonds and importState refuse bad input by name; driven grains keep their velocity and spin.
+// addBonds and importState refuse bad input by name; driven grains keep their velocity and spin;
+// the other bonds keep their own loads on the step a bond breaks.
 #include "CapsuleTestSupport.h"
 
 #include <algorithm>
@@ -409,6 +410,55 @@ TEST_P(BondStore, BrokenBondIsRemovedAndTheContactLawReturns)
     EXPECT_EQ(s.bondCounts().broken, 1u);
     // k delta with delta from the read-back positions (round-off 1e-16 m of 1e-5 m)
     EXPECT_NEAR(g.force[0], -1e6 * overlap, 1e-9 * 1e6 * overlap);
+}
+
+// Two bonded pairs far apart: one pulled until its bond breaks, one held stretched. The second
+// is independent of the first, so the force on its fixed grain must be the same, step by step
+// and bit for bit, as in a system without the first pair, also on the step the first bond breaks
+// and is removed from the store (its removal moves the other bond to another index; the loads
+// must move with it). Both store orders: the breaking pair placed before and after the other.
+TEST_P(BondStore, OtherBondsKeepTheirLoadsWhenABondBreaks)
+{
+    dem::Parameters p = bondParameters();
+    p.bonds.strength = dem::BondStrength::constant;
+    p.bonds.tensileStrength = 1e3;
+    p.bonds.shearStrength = 0.0;
+    for (const double breakingAt : {0.2, 0.7})
+    {
+        const double heldAt = 0.9 - breakingAt;
+        auto pair = [](double x, dem::GrainInit& fixed, dem::GrainInit& driven)
+        {
+            fixed.radius = driven.radius = 0.01;
+            fixed.position = {x, 0.5, 0.5};
+            fixed.flag = dem::GrainFlag::fixed;
+            driven.position = {x + 0.02, 0.5, 0.5};
+            driven.flag = dem::GrainFlag::driven;
+        };
+        dem::GrainInit a, b, c, d;
+        pair(breakingAt, a, b);
+        pair(heldAt, c, d);
+        dem::System both(p), alone(p);
+        both.addGrains({a, b, c, d});
+        both.addBonds({{0, 1, 0.003}, {2, 3, 0.003}});
+        both.setGrainVelocities({1}, {0.01, 0.0, 0.0}, {0.0, 0.0, 0.0});
+        both.setGrainVelocities({3}, {0.001, 0.0, 0.0}, {0.0, 0.0, 0.0});
+        alone.addGrains({c, d});
+        alone.addBonds({{0, 1, 0.003}});
+        alone.setGrainVelocities({1}, {0.001, 0.0, 0.0}, {0.0, 0.0, 0.0});
+        int differing = 0, brokeAt = -1;
+        for (int step = 0; step < 500; ++step)
+        {
+            both.step(1);
+            alone.step(1);
+            if (brokeAt < 0 && both.bondCounts().broken == 1)
+                brokeAt = step;
+            differing += both.grains().force[6] != alone.grains().force[0];
+        }
+        EXPECT_GT(brokeAt, 0) << "the pulled bond should break within 500 steps";
+        EXPECT_EQ(both.bondCounts().intact, 1u);
+        EXPECT_EQ(differing, 0) << "breaking pair at x = " << breakingAt << ", broke at step "
+                                << brokeAt;
+    }
 }
 
 TEST_P(BondStore, ThreadCountChangesNoBit)

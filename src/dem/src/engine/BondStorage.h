@@ -117,7 +117,13 @@ public:
             thrust::gather(policy, order.begin(), order.end(), state_.begin() + c * n,
                            scratch_.begin() + c * m);
         state_.swap(scratch_);
-        loads_.resize(kBondLoadComponents * m);
+        // The loads follow their bonds: after a removal in the force pass, GatherKick reads
+        // this step's loads by the new indices (they were left in place until the MPI work
+        // found it: on the step a bond broke, the bonds after it in the store applied their
+        // neighbours' loads).
+        scratch_.resize(kBondLoadComponents * m);
+        Exec::forEach(int(m), GatherBondLoads{raw(loads_), raw(scratch_), raw(order)});
+        loads_.swap(scratch_);
     }
 
     //- Remove the bonds whose `broken` entry is non-zero.

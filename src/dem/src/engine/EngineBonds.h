@@ -24,7 +24,10 @@ template <class Exec>
 void EngineImpl<Exec>::indexBonds()
 {
     const int n = grains_.size();
-    internalOf_.resize(n);
+    if (halo_) // ids count over all ranks; -1: not here
+        internalOf_.assign(std::size_t(halo_->addedGrains), -1);
+    else
+        internalOf_.resize(n);
     Exec::forEach(n, InvertIds{grains_.integer(fId), thrust::raw_pointer_cast(internalOf_.data())});
     bonds_.index(exec_.policy(), internalOf_, n);
     // The pairs' flags, when the list is the current grains' (else the next rebuild sets them).
@@ -53,6 +56,19 @@ void EngineImpl<Exec>::computeBondForces(double dt)
         for (int c = 0; c < 4; ++c)
             brokenBondCreep_[c] +=
                 exec_.sumOf(count, BrokenBondCreep{bonds_.view(), flags, kBondCreepNormal + c});
+        if (halo_)
+        {
+            halo_->bondsBroken +=
+                exec_.sumOf(count, BondRankShare{bonds_.view(), grains_.integer(fFlag), flags});
+            Vec<double>& share = bondReadback_; // per bond: its share if broken, else 0
+            share.resize(std::size_t(count));
+            Exec::forEach(count, StoreBondShare{bonds_.view(), grains_.integer(fFlag), flags,
+                                                thrust::raw_pointer_cast(share.data())});
+            for (int c = 0; c < 4; ++c)
+                halo_->brokenCreep[std::size_t(c)] += exec_.sumOf(
+                    count, BrokenBondCreep{bonds_.view(), thrust::raw_pointer_cast(share.data()),
+                                           kBondCreepNormal + c});
+        }
         bonds_.removeBroken(exec_.policy(), bondBroken_);
         bondsBroken_ += std::size_t(std::llround(broken));
         indexBonds();
@@ -81,12 +97,17 @@ void EngineImpl<Exec>::formBonds()
                                    thrust::raw_pointer_cast(formationPairs_.data()), bonds_.view(),
                                    offset, p.seed, p.areaFraction[0], p.areaFraction[1]});
     bondsFormed_ += std::size_t(added);
+    if (halo_)
+        halo_->bondsFormed += exec_.sumOf(
+            added, FormedBondShare{pairs_.view(), thrust::raw_pointer_cast(formationPairs_.data()),
+                                   grains_.integer(fFlag)});
     indexBonds();
 }
 
 template <class Exec>
 void EngineImpl<Exec>::addBonds(const std::vector<BondInit>& added)
 {
+    refuseDecomposed("addBonds (bonds form by frozenOnContact)");
     const int n = grains_.size();
     std::vector<int> first = bonds_.hostFirst(), second = bonds_.hostSecond();
     const std::vector<double> oldState = bonds_.hostState();
@@ -191,9 +212,22 @@ BondData EngineImpl<Exec>::bonds() const
                   return std::make_pair(first[a], second[a]) < std::make_pair(first[b], second[b]);
               });
     auto component = [&](int c, std::size_t b) { return state[std::size_t(c) * count + b]; };
+    // Over MPI ranks: the bonds whose first grain this rank owns (each bond on one rank).
+    std::vector<char> reported(std::size_t(count), 1);
+    if (halo_)
+    {
+        const std::vector<int> id = grains_.hostInt(fId), flag = grains_.hostInt(fFlag);
+        std::unordered_map<int, int> flagOf;
+        for (std::size_t i = 0; i < id.size(); ++i)
+            flagOf[id[i]] = flag[i];
+        for (int b = 0; b < count; ++b)
+            reported[std::size_t(b)] = flagOf.at(first[std::size_t(b)]) != kFlagGhost;
+    }
     for (const int k : order)
     {
         const std::size_t b = std::size_t(k);
+        if (!reported[b])
+            continue;
         out.first.push_back(first[b]);
         out.second.push_back(second[b]);
         out.patchRadius.push_back(component(kBondPatchRadius, b));
@@ -235,13 +269,15 @@ double EngineImpl<Exec>::maximumBondStiffness() const
                            exec_.maxOf(count, BondStiffnessOf{e.grains_.real(fRadius),
                                                               e.bonds_.view(), b.youngsModulus}));
     }
-    return largest;
+    return globalMax(largest);
 }
 
 template <class Exec>
 BondCounts EngineImpl<Exec>::bondCounts() const
 {
     BondCounts out;
+    if (halo_)
+        return decomposedBondCounts();
     out.formed = bondsFormed_;
     out.broken = bondsBroken_;
     out.brokenCreep = brokenBondCreep_;
@@ -263,6 +299,51 @@ BondCounts EngineImpl<Exec>::bondCounts() const
         out.intactCreep[3] += data.creepBend[b];
     }
     out.meanPatchRadius = radiusSum / count;
+    return out;
+}
+
+template <class Exec>
+BondCounts EngineImpl<Exec>::decomposedBondCounts() const
+{
+    // Each bond counted once over the ranks: by the rank that owns its first grain (bonds());
+    // formed and broken from the shares each rank counted (BondRankShare).
+    const BondData data = bonds();
+    const int count = bonds_.count();
+    double apart = 0.0;
+    if (count > 0)
+    {
+        const std::vector<int> first = bonds_.hostFirst(), id = grains_.hostInt(fId),
+                               flag = grains_.hostInt(fFlag);
+        std::unordered_map<int, int> flagOf;
+        for (std::size_t i = 0; i < id.size(); ++i)
+            flagOf[id[i]] = flag[i];
+        std::vector<double> touching(static_cast<std::size_t>(count));
+        thrust::copy(bondReadback_.begin() + 6L * count, bondReadback_.end(), touching.begin());
+        for (int b = 0; b < count; ++b)
+            if (flagOf.at(first[std::size_t(b)]) != kFlagGhost && touching[std::size_t(b)] == 0.0)
+                apart += 1.0;
+    }
+    double radiusSum = 0.0;
+    std::array<double, 4> creep = {};
+    for (std::size_t b = 0; b < data.first.size(); ++b)
+    {
+        radiusSum += data.patchRadius[b];
+        creep[0] += data.creepNormal[b];
+        creep[1] += data.creepShear[b];
+        creep[2] += data.creepTwist[b];
+        creep[3] += data.creepBend[b];
+    }
+    BondCounts out;
+    out.intact = std::size_t(std::llround(globalSum(double(data.first.size()))));
+    out.apart = std::size_t(std::llround(globalSum(apart)));
+    out.formed = std::size_t(std::llround(globalSum(halo_->bondsFormed)));
+    out.broken = std::size_t(std::llround(globalSum(halo_->bondsBroken)));
+    const double radii = globalSum(radiusSum);
+    out.meanPatchRadius = out.intact > 0 ? radii / double(out.intact) : 0.0;
+    for (int c = 0; c < 4; ++c)
+        out.intactCreep[std::size_t(c)] = globalSum(creep[std::size_t(c)]);
+    for (int c = 0; c < 4; ++c)
+        out.brokenCreep[std::size_t(c)] = globalSum(halo_->brokenCreep[std::size_t(c)]);
     return out;
 }
 

@@ -160,6 +160,14 @@ void EngineImpl<Exec>::redistribute()
     constexpr int H = 3 * kHistoryVectors;
     const int width = HostGrains::recordWidth();
 
+    // Bonds: the ranks decide where a ghost's grain goes from its position, so the ghosts
+    // must be their owners' state of this step (the rebuild came instead of the refresh).
+    const bool bonded = params_.bonds.enabled;
+    if (bonded && h.receiveSizes.size() == std::size_t(ranks))
+    {
+        refreshGhosts();
+        Exec::forEach(n, UnpackGrains{grains_.view()});
+    }
     HostGrains old;
     old.n = n;
     for (int f = 0; f < kRealFieldCount; ++f)
@@ -168,6 +176,20 @@ void EngineImpl<Exec>::redistribute()
         old.ints[f] = grains_.hostInt(f);
     const std::vector<int>& flag = old.ints[fFlag];
     const std::vector<int>& id = old.ints[fId];
+
+    std::unordered_map<int, int> oldIndex;
+    oldIndex.reserve(std::size_t(n));
+    for (int i = 0; i < n; ++i)
+        oldIndex[id[i]] = i;
+    auto ownerOfOld = [&](int grainId)
+    {
+        const auto found = oldIndex.find(grainId);
+        if (found == oldIndex.end())
+            throw Error("internal error: bonded grain " + std::to_string(grainId) +
+                        " is not on rank " + std::to_string(me));
+        double y[3];
+        return h.boxes.ownerOf(old.position(found->second, y));
+    };
 
     // 1. Owned grains that left the box go to their new owner.
     std::vector<int> destination(static_cast<std::size_t>(n), -1), kept;
@@ -209,6 +231,27 @@ void EngineImpl<Exec>::redistribute()
                 add(b, a, p, -1.0);
         }
     }
+    // and their bonds (first, second, the partner's new owner, the state), which this rank
+    // evaluated as their owner.
+    constexpr int S = kBondStateComponents;
+    const std::vector<int> bondFirst = bonded ? bonds_.hostFirst() : std::vector<int>(),
+                           bondSecond = bonded ? bonds_.hostSecond() : std::vector<int>();
+    const std::vector<double> bondState = bonded ? bonds_.hostState() : std::vector<double>();
+    const std::size_t bondCount = bondFirst.size();
+    std::unordered_map<int, std::vector<double>> leavingBonds;
+    for (std::size_t b = 0; b < bondCount; ++b)
+        for (const int end : {bondFirst[b], bondSecond[b]})
+        {
+            const int i = oldIndex.at(end);
+            if (destination[i] < 0)
+                continue;
+            const int partner = end == bondFirst[b] ? bondSecond[b] : bondFirst[b];
+            std::vector<double>& list = leavingBonds[i];
+            list.insert(list.end(),
+                        {double(bondFirst[b]), double(bondSecond[b]), double(ownerOfOld(partner))});
+            for (int c = 0; c < S; ++c)
+                list.push_back(bondState[std::size_t(c) * bondCount + b]);
+        }
     std::vector<std::vector<double>> send(static_cast<std::size_t>(ranks));
     for (int i = 0; i < n; ++i)
         if (destination[i] >= 0)
@@ -218,6 +261,9 @@ void EngineImpl<Exec>::redistribute()
             const std::vector<double>& list = leavingPairs[i];
             out.push_back(double(list.size() / (1 + H)));
             out.insert(out.end(), list.begin(), list.end());
+            const std::vector<double>& bondList = leavingBonds[i];
+            out.push_back(double(bondList.size() / (3 + S)));
+            out.insert(out.end(), bondList.begin(), bondList.end());
         }
     const std::vector<std::vector<double>> arrived = comm.exchange(send);
 
@@ -228,6 +274,7 @@ void EngineImpl<Exec>::redistribute()
         old.appendRecord(i, owned);
     h.arrivedHistory.clear();
     h.arrivedIds.clear();
+    std::vector<std::vector<double>> arrivedBonds; //!< first, second, partner's owner, state
     for (const std::vector<double>& message : arrived)
         for (std::size_t at = 0; at < message.size();)
         {
@@ -244,10 +291,63 @@ void EngineImpl<Exec>::redistribute()
                           history.begin());
                 h.arrivedHistory[HaloState<Exec>::key(arrivedId, int(message[at]))] = history;
             }
+            const int bondsOf = int(message[at++]);
+            for (int k = 0; k < bondsOf; ++k, at += 3 + S)
+                arrivedBonds.emplace_back(message.begin() + long(at),
+                                          message.begin() + long(at + 3 + S));
         }
     const int ownedCount = int(owned.size() / std::size_t(width));
 
-    // 3. Ghosts afresh: each owned grain to every other rank whose box lies within reach.
+    // The bonds now: those with a grain owned here, kept or arrived (a bond held before and
+    // arrived again is the same bits: both ranks evaluated it alike). Each owned grain's bond
+    // partners must be here: their owners send them (below, the ghosts' extra ranks).
+    std::unordered_set<int> ownedNow;
+    for (int k = 0; k < ownedCount; ++k)
+        ownedNow.insert(int(owned[std::size_t(k) * width + HostGrains::idOffset()]));
+    std::vector<int> nextFirst, nextSecond;
+    std::vector<std::vector<double>> nextState;
+    std::unordered_map<std::uint64_t, int> partnerOwner; //!< (owned grain, partner): its owner
+    {
+        std::unordered_set<std::uint64_t> held;
+        auto hold = [&](int first, int second, const double* state)
+        {
+            if (!(ownedNow.count(first) || ownedNow.count(second)) ||
+                !held.insert(HaloState<Exec>::key(first, second)).second)
+                return;
+            nextFirst.push_back(first);
+            nextSecond.push_back(second);
+            nextState.emplace_back(state, state + S);
+        };
+        for (const std::vector<double>& bond : arrivedBonds)
+        {
+            const int first = int(bond[0]), second = int(bond[1]);
+            const int partner = ownedNow.count(first) ? second : first;
+            partnerOwner[HaloState<Exec>::key(partner == second ? first : second, partner)] =
+                int(bond[2]);
+            hold(first, second, bond.data() + 3);
+        }
+        std::vector<double> state(S);
+        for (std::size_t b = 0; b < bondCount; ++b)
+        {
+            for (int c = 0; c < S; ++c)
+                state[c] = bondState[std::size_t(c) * bondCount + b];
+            hold(bondFirst[b], bondSecond[b], state.data());
+        }
+    }
+    std::unordered_map<int, std::vector<int>> bondRanks; //!< owned grain: its partners' owners
+    for (std::size_t b = 0; b < nextFirst.size(); ++b)
+        for (const int end : {nextFirst[b], nextSecond[b]})
+        {
+            const int partner = end == nextFirst[b] ? nextSecond[b] : nextFirst[b];
+            if (!ownedNow.count(end) || ownedNow.count(partner))
+                continue;
+            const auto told = partnerOwner.find(HaloState<Exec>::key(end, partner));
+            bondRanks[end].push_back(told != partnerOwner.end() ? told->second
+                                                                : ownerOfOld(partner));
+        }
+
+    // 3. Ghosts afresh: each owned grain to every other rank whose box lies within reach, and
+    // to the owners of its bond partners.
     double bMax = 0.0;
     for (int i = 0; i < n; ++i)
         bMax = std::max(bMax, old.reals[fRadius][i] + old.reals[fCoreHalfLength][i]);
@@ -261,6 +361,14 @@ void EngineImpl<Exec>::redistribute()
     {
         next.readRecord(owned.data() + std::size_t(k) * width, k);
         h.boxes.ranksNear(next.position(k, x), reach, me, near);
+        if (bonded)
+        {
+            const auto extra = bondRanks.find(next.ints[fId][k]);
+            if (extra != bondRanks.end())
+                for (int r : extra->second)
+                    if (r != me && std::find(near.begin(), near.end(), r) == near.end())
+                        near.push_back(r);
+        }
         for (int r : near)
         {
             ghostSend[r].insert(ghostSend[r].end(), owned.begin() + long(k) * width,
@@ -294,10 +402,6 @@ void EngineImpl<Exec>::redistribute()
             }
             h.ghostIds[r].push_back(all.ints[fId][slot]);
         }
-    std::unordered_map<int, int> oldIndex;
-    oldIndex.reserve(std::size_t(n));
-    for (int i = 0; i < n; ++i)
-        oldIndex[id[i]] = i;
     h.previousBeforeSort.assign(std::size_t(all.n), INT_MAX / 2);
     for (int i = 0; i < all.n; ++i)
     {
@@ -311,6 +415,14 @@ void EngineImpl<Exec>::redistribute()
     for (int f = 0; f < kIntFieldCount; ++f)
         grains_.setInt(f, all.ints[f]);
     h.ghostCount = ghostCount;
+    if (bonded)
+    {
+        std::vector<double> state(std::size_t(S) * nextFirst.size());
+        for (std::size_t b = 0; b < nextFirst.size(); ++b)
+            for (int c = 0; c < S; ++c)
+                state[std::size_t(c) * nextFirst.size() + b] = nextState[b][std::size_t(c)];
+        bonds_.assign(nextFirst, nextSecond, state); // indexed after the rebuild's sort
+    }
     // One shape path on every rank: the per-step records have one width.
     if (comm.max(grains_.hasCapsules() ? 1.0 : 0.0) > 0.0)
         grains_.setCapsulePath(true);
@@ -424,6 +536,8 @@ void EngineImpl<Exec>::exportHalo(SystemState& s) const
                                         params_.decomposition.ranks[0],
                                         params_.decomposition.ranks[1]};
     s.integers["halo.counts"] = {h.addedGrains, h.ghostCount};
+    s.reals["halo.bondCounts"] = {h.bondsFormed,    h.bondsBroken,    h.brokenCreep[0],
+                                  h.brokenCreep[1], h.brokenCreep[2], h.brokenCreep[3]};
     auto lists = [&](const std::vector<std::vector<int>>& ids, const std::string& name)
     {
         std::vector<std::int64_t>& sizes = s.integers[name + "Counts"];
@@ -465,6 +579,12 @@ void EngineImpl<Exec>::importHalo(const SystemState& s)
         throw Error("importState: 'halo.counts' must have 2 entries");
     h.addedGrains = counts[0];
     h.ghostCount = int(counts[1]);
+    const std::vector<double>& bondCounts = stateDetail::entry(s.reals, "halo.bondCounts");
+    if (bondCounts.size() != 6)
+        throw Error("importState: 'halo.bondCounts' must have 6 entries");
+    h.bondsFormed = bondCounts[0];
+    h.bondsBroken = bondCounts[1];
+    std::copy(bondCounts.begin() + 2, bondCounts.end(), h.brokenCreep.begin());
     auto lists = [&](std::vector<std::vector<int>>& ids, const std::string& name)
     {
         const std::vector<std::int64_t>& sizes = stateDetail::entry(s.integers, name + "Counts");

@@ -224,6 +224,8 @@ private:
     void refreshGhosts();
     //- The decomposed part of exportState / importState (restart on the same decomposition).
     void exportHalo(SystemState& s) const;
+    //- bondCounts over MPI ranks (EngineBonds.h).
+    BondCounts decomposedBondCounts() const;
     void importHalo(const SystemState& s);
 
     // Read-back kernels need non-const views of storage they do not modify.

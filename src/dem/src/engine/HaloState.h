@@ -61,6 +61,10 @@ struct HaloState
     //- keyed (id of the arrived grain, id of its partner), as the arrived grain's own.
     std::unordered_map<std::uint64_t, History> arrivedHistory;
     std::unordered_set<int> arrivedIds;
+    //- Bonds formed and broken here since the System was built, each bond held by two ranks
+    //- counted half (BondRankShare): summed over the ranks, the counts.
+    double bondsFormed = 0.0, bondsBroken = 0.0;
+    std::array<double, 4> brokenCreep = {}; //!< creep of the broken bonds, by share
 
     static std::uint64_t key(int a, int b)
     {

@@ -20,13 +20,6 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3,
-              kFlagDriven = 4;
-//- Internal only: a copy of another MPI rank's grain (EngineHalo.h). Its state is overwritten
-//- from its owner before every force evaluation; the step neither kicks nor moves it, and its
-//- loads are not summed.
-constexpr int kFlagGhost = 5;
-
 //- Half kick of grain i's (v, omega), respecting its flag (a driven grain keeps both).
 DEM_HD void kick(const GrainView& g, int i, int flag, double halfDt, double inverseMass,
                  double inverseInertia, const Vector3d& force, const Vector3d& torque, Vector3d& v,

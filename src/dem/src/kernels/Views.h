@@ -12,6 +12,14 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
+//- GrainView::flag values: GrainFlag's, and one internal to the engine.
+constexpr int kFlagFree = 0, kFlagFixed = 1, kFlagPrescribed = 2, kFlagTranslationOnly = 3,
+              kFlagDriven = 4;
+//- Internal only: a copy of another MPI rank's grain (EngineHalo.h). Its state is overwritten
+//- from its owner before every force evaluation; the step neither kicks nor moves it, and its
+//- loads are not summed.
+constexpr int kFlagGhost = 5;
+
 //- Maximum number of walls (their contact history is stored per grain): a box of six sides.
 constexpr int kMaxWalls = 6;
 //- Per grain, wall and contact: tangential history (x, y, z), then the grain's force on the

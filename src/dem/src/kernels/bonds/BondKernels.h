@@ -184,6 +184,19 @@ struct BondGather
     }
 };
 
+//- out bond b's loads = in bond order[b]'s (kBondLoadComponents per bond, together).
+struct GatherBondLoads
+{
+    const double* in;
+    double* out;
+    const int* order;
+    DEM_HD void operator()(int b) const
+    {
+        for (int c = 0; c < kBondLoadComponents; ++c)
+            out[long(b) * kBondLoadComponents + c] = in[long(order[b]) * kBondLoadComponents + c];
+    }
+};
+
 //- Creep component `component` of the bonds that broke this step (broken[b] = 1), summed
 //- before they are removed: the sample's creep keeps what broken bonds crept.
 struct BrokenBondCreep
@@ -194,7 +207,8 @@ struct BrokenBondCreep
 
     DEM_HD double operator()(int b) const
     {
-        return broken[b] != 0.0 ? bonds.state[long(component) * bonds.count + b] : 0.0;
+        // broken: 1 for a broken bond (over MPI ranks its share, BondRankShare), else 0
+        return broken[b] != 0.0 ? broken[b] * bonds.state[long(component) * bonds.count + b] : 0.0;
     }
 };
 
@@ -234,6 +248,46 @@ struct InvertIds
     const int* id;
     int* internalOf;
     DEM_HD void operator()(int i) const { internalOf[id[i]] = i; }
+};
+
+//- A bond's share in the counts summed over MPI ranks: a bond with a ghost is held by two ranks
+//- (each owns one of its grains), so each counts it half.
+struct BondRankShare
+{
+    BondView bonds;
+    const int* flag;
+    const double* weight; //!< optional per bond (broken flags), else 1
+    DEM_HD double operator()(int b) const
+    {
+        const bool shared =
+            flag[bonds.grainA[b]] == kFlagGhost || flag[bonds.grainB[b]] == kFlagGhost;
+        return (weight ? weight[b] : 1.0) * (shared ? 0.5 : 1.0);
+    }
+};
+
+//- Stores BondRankShare per bond.
+struct StoreBondShare
+{
+    BondView bonds;
+    const int* flag;
+    const double* weight;
+    double* out;
+    DEM_HD void operator()(int b) const { out[b] = BondRankShare{bonds, flag, weight}(b); }
+};
+
+//- The same share for the bond formed on pair[k] (before the store indexes it).
+struct FormedBondShare
+{
+    PairView pairs;
+    const int* pair;
+    const int* flag;
+    DEM_HD double operator()(int k) const
+    {
+        const int p = pair[k];
+        const bool shared =
+            flag[pairs.owner[p]] == kFlagGhost || flag[pairs.partner[p]] == kFlagGhost;
+        return shared ? 0.5 : 1.0;
+    }
 };
 
 //- Each bond's internal grain indices.
@@ -300,6 +354,8 @@ struct FormationCandidate
         if (bonded[p])
             return false;
         const long i = pairs.owner[p], j = pairs.partner[p];
+        if (g.flag[i] == kFlagGhost && g.flag[j] == kFlagGhost) // the ranks owning them form it
+            return false;
         const double* xr = g.packedPositionRadius;
         const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
         const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
