@@ -43,7 +43,7 @@ def run(args, cwd, timeout=60, env=None):
 
 
 @pytest.mark.parametrize("script", [*FOLDER_SCRIPTS, "makeGrains", "benchPeers",
-                                    "gpuCheck", "gpuRuntime"])
+                                    "benchRanks", "gpuCheck", "gpuRuntime"])
 def test_help_prints_usage_and_creates_nothing(script, tmp_path):
     r = run([script, "--help"], tmp_path)
     assert r.returncode == 0, r.stderr

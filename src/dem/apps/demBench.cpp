@@ -311,11 +311,15 @@ int main(int argc, char** argv)
         system.setViscousDrag(0.0);
         if (session.size() > 1) // the grains are with their owners now
         {
-            const double owned = double(system.grains().mass.size());
+            const double owned = double(system.grains().mass.size()),
+                         ghosts = double(system.ghostCount());
             std::printf("decomposition %dx%d: grains per rank %g (min) %g (max) %g (mean), "
-                        "load imbalance max/mean %.3f\n",
+                        "load imbalance max/mean %.3f; ghosts per rank %g (min) %g (max), "
+                        "%.1f %% of the owned on average\n",
                         boxes.first, boxes.second, session.min(owned), session.max(owned),
-                        double(n) / session.size(), session.max(owned) * session.size() / n);
+                        double(n) / session.size(), session.max(owned) * session.size() / n,
+                        session.min(ghosts), session.max(ghosts),
+                        100.0 * session.sum(ghosts) / double(n));
         }
         // The start of the timed phase, for comparisons with other codes (--pour: before the
         // flow turns chaotic)

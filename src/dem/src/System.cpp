@@ -324,6 +324,11 @@ void System::step(int nSteps)
     impl_->engine->step(nSteps);
 }
 
+std::size_t System::ghostCount() const
+{
+    return impl_->engine->ghostCount();
+}
+
 std::size_t System::grainCount() const
 {
     return impl_->engine->grainCount();

@@ -85,6 +85,9 @@ public:
 
     // ---- read-back ----------------------------------------------------------------------
     std::size_t grainCount() const;
+    //- With a Decomposition: the copies of other ranks' grains this rank holds (its halo, as of
+    //- the last neighbour rebuild); 0 on one process.
+    std::size_t ghostCount() const;
     GrainData grains() const;
     int wallCount() const;
     WallData wall(int wall) const;

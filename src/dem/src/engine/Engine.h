@@ -58,6 +58,8 @@ public:
     virtual void step(int nSteps) = 0;
 
     virtual std::size_t grainCount() const = 0;
+    //- Copies of other ranks' grains this rank holds (0 on one process).
+    virtual std::size_t ghostCount() const { return 0; }
     virtual double minimumMass() const = 0;
     virtual GrainData grains() const = 0;
     virtual int wallCount() const = 0;

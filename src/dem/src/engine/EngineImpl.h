@@ -157,6 +157,7 @@ public:
     }
 
     // ---- read-back (EngineIo.h) -------------------------------------------------------------
+    std::size_t ghostCount() const override { return halo_ ? std::size_t(halo_->ghostCount) : 0; }
     //- With a decomposition: the grains of all ranks (each counted by its owner).
     std::size_t grainCount() const override
     {
