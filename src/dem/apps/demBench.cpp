@@ -273,6 +273,9 @@ int main(int argc, char** argv)
 
         // (after the capsule set-up above, which every rank runs alike on one process)
         p.decomposition.ranks = {boxes.first, boxes.second};
+        if (p.decomposition.rankCount() > 1 && !dem::mpiBuild())
+            throw dem::Error("--decompose: this DEM library was built without MPI (install "
+                             "libopenmpi-dev and rebuild)");
         if (p.decomposition.rankCount() != session.size())
             throw dem::Error("--decompose " + std::to_string(boxes.first) + "x" +
                              std::to_string(boxes.second) + " needs mpirun -np " +

@@ -272,7 +272,8 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
         if (b.size() != a.size() || counters.size() != 2)
             throw Error("importState: 'bonds.second' or 'bonds.counters' has the wrong size");
         const std::size_t count = a.size();
-        const std::int64_t n = grains_.size();
+        // ids of this System's grains (over MPI ranks: of all ranks' grains)
+        const std::int64_t n = halo_ ? halo_->addedGrains : grains_.size();
         for (std::size_t k = 0; k < count; ++k)
             if (a[k] < 0 || b[k] <= a[k] || b[k] >= n)
                 throw Error("importState: bond " + std::to_string(k) + " joins grains " +

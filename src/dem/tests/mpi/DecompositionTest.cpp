@@ -8,7 +8,7 @@
 //   - A dense packing with pairs across the boundaries follows the one-process run within the
 //     growth of round-off (bound measured as BackendComparisonTest does); so does one whose
 //     grains all lie in one rank's box (the other owns nothing).
-//   - A restart from each rank's exported state continues bit for bit.
+//   - A restart from each rank's exported state continues bit for bit, with bonds too.
 //   - Bonded capsules sheared across the boundaries (bonds forming, breaking and travelling
 //     with their grains) end with the one-process kinetic energy and bond counts.
 //   - Misuse is refused with messages that name the entry: rank counts, calls not available
@@ -326,26 +326,51 @@ TEST_P(Decomposition, RestartFromDecomposedStateIsExact)
     std::vector<dem::GrainInit> grains = packing.grains;
     for (dem::GrainInit& g : grains)
         g.velocity = {20.0 * (g.position[2] - 0.05) / 0.05, 0.0, 0.0};
-    dem::Parameters p = shearParameters(GetParam(), packing.length, 8e-4);
-    p.decomposition.ranks = {2, 1};
-    dem::System whole(p), first(p);
-    whole.addGrains(blockOf(grains));
-    first.addGrains(blockOf(grains));
-    whole.step(700);
-    first.step(700);
-    const dem::SystemState state = first.exportState();
-    whole.step(700);
-    dem::System second(p);
-    second.importState(state);
-    second.step(700);
-    const dem::GrainData a = whole.grains(), b = second.grains();
-    bool same = a.id == b.id && a.position == b.position && a.velocity == b.velocity &&
-                a.angularVelocity == b.angularVelocity;
-    const double sameEverywhere = mpi->min(same ? 1.0 : 0.0);
-    EXPECT_EQ(sameEverywhere, 1.0);
-    EXPECT_EQ(second.neighbourRebuildCount(), whole.neighbourRebuildCount());
-    EXPECT_GT(whole.neighbourRebuildCount(), 10u);
-    EXPECT_EQ(second.grainCount(), grains.size());
+    for (const bool bonded : {false, true})
+    {
+        dem::Parameters p = shearParameters(GetParam(), packing.length, 8e-4);
+        p.decomposition.ranks = {2, 1};
+        if (bonded) // bonds frozen on contact, many breaking in the shear (the test above's)
+        {
+            p.bonds.enabled = true;
+            p.bonds.formation = dem::BondFormation::frozenOnContact;
+            p.bonds.formationInterval = 10;
+            p.bonds.youngsModulus = 2.0 * p.grainGrain.normalStiffness / (M_PI * 0.09375 * 0.0105);
+            p.bonds.creep = dem::BondCreep::maxwell;
+            p.bonds.contactViscosity = 1e6;
+            p.bonds.strength = dem::BondStrength::constant;
+            p.bonds.tensileStrength = p.bonds.shearStrength = 1e8;
+        }
+        dem::System whole(p), first(p);
+        whole.addGrains(blockOf(grains));
+        first.addGrains(blockOf(grains));
+        whole.step(700);
+        first.step(700);
+        const dem::SystemState state = first.exportState();
+        whole.step(700);
+        dem::System second(p);
+        second.importState(state);
+        second.step(700);
+        const dem::GrainData a = whole.grains(), b = second.grains();
+        const dem::BondData bondsA = whole.bonds(), bondsB = second.bonds();
+        bool same = a.id == b.id && a.position == b.position && a.velocity == b.velocity &&
+                    a.angularVelocity == b.angularVelocity && bondsA.first == bondsB.first &&
+                    bondsA.second == bondsB.second && bondsA.normalForce == bondsB.normalForce;
+        const double sameEverywhere = mpi->min(same ? 1.0 : 0.0);
+        const dem::BondCounts countsA = whole.bondCounts(), countsB = second.bondCounts();
+        EXPECT_EQ(sameEverywhere, 1.0) << (bonded ? "with bonds" : "without bonds");
+        EXPECT_EQ(second.neighbourRebuildCount(), whole.neighbourRebuildCount());
+        EXPECT_GT(whole.neighbourRebuildCount(), 10u);
+        EXPECT_EQ(second.grainCount(), grains.size());
+        EXPECT_EQ(countsB.formed, countsA.formed);
+        EXPECT_EQ(countsB.broken, countsA.broken);
+        if (bonded)
+            EXPECT_GT(countsA.broken, 0u);
+        if (mpi->rank() == 0)
+            std::printf("  %s: %zu rebuilds, bonds formed %zu, broken %zu, intact %zu\n",
+                        bonded ? "bonded" : "unbonded", whole.neighbourRebuildCount(),
+                        countsA.formed, countsA.broken, countsA.intact);
+    }
 }
 
 TEST_P(Decomposition, MisuseIsRefusedWithAClearMessage)
