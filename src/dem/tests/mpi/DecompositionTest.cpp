@@ -5,9 +5,10 @@
 // where a rank leaving early would leave the other waiting).
 //   - A sheared packing whose grains cross the rank boundaries for more than 100 neighbour
 //     rebuilds keeps every grain exactly once, its mass, and its momentum to round-off.
-//   - A dense packing with pairs across the boundaries follows the one-process run within the
-//     growth of round-off (bound measured as BackendComparisonTest does); so does one whose
-//     grains all lie in one rank's box (the other owns nothing).
+//   - A dense packing with pairs across the boundaries, on a wall and under a stress-controlled
+//     lid, follows the one-process run within the growth of round-off (bound measured as
+//     BackendComparisonTest does); so does one whose grains all lie in one rank's box (the
+//     other owns nothing).
 //   - A restart from each rank's exported state continues bit for bit, with bonds too.
 //   - Bonded capsules sheared across the boundaries (bonds forming, breaking and travelling
 //     with their grains) end with the one-process kinetic energy and bond counts.
@@ -187,8 +188,17 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
         dem::Parameters p = shearParameters(GetParam(), packing.length, 2e-3);
         p.gravity = {0.0, 0.0, -9.81};
         p.grainGrain.normalDamping = p.grainGrain.tangentialDamping = 0.0;
+        // A lid under a normal stress on the highest grain: its motion follows the sum of the
+        // grains' forces on it over both ranks (the same on each rank).
+        dem::WallSpec lid;
+        lid.side = dem::WallSpec::Side::upper;
+        lid.mode = dem::WallSpec::Mode::stress;
+        lid.mass = 0.1;
+        lid.normalStress = 500.0;
+        for (const dem::GrainInit& g : grains)
+            lid.position = std::max(lid.position, g.position[2] + g.radius);
         auto run = [&](const std::vector<dem::GrainInit>& start, bool split, double& wallForce,
-                       double& contacts)
+                       double& contacts, double& lidPosition)
         {
             dem::Parameters q = p;
             if (split)
@@ -196,9 +206,11 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
             dem::System s(q);
             s.addGrains(split ? blockOf(start) : start);
             s.addWall(dem::WallSpec{});
+            s.addWall(lid);
             s.step(steps);
             wallForce = s.wall(0).grainForce;
             contacts = double(s.contactCount());
+            lidPosition = s.wall(1).position;
             return s.grains();
         };
         const double xMax = packing.length;
@@ -214,10 +226,13 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
                 g.position[d] += eta0 * e[d] / length;
         }
         double wallForce = 0.0, contacts = 0.0, splitWallForce = 0.0, splitContacts = 0.0, unused;
-        const dem::GrainData reference = run(grains, false, wallForce, contacts),
-                             moved = run(perturbed, false, unused, unused),
-                             split = run(grains, true, splitWallForce, splitContacts);
-        double bound = 0.0, largest = 0.0;
+        double lidReference = 0.0, lidMoved = 0.0, lidSplit = 0.0;
+        const dem::GrainData reference = run(grains, false, wallForce, contacts, lidReference),
+                             moved = run(perturbed, false, unused, unused, lidMoved),
+                             split = run(grains, true, splitWallForce, splitContacts, lidSplit);
+        double bound = std::fabs(lidMoved - lidReference),
+               largest = std::fabs(lidSplit - lidReference);
+        EXPECT_EQ(mpi->max(lidSplit), mpi->min(lidSplit)) << "the lid must be one on all ranks";
         for (std::size_t i = 0; i < reference.mass.size(); ++i)
             bound = std::max(bound, norm(sub(at(moved.position, i), at(reference.position, i))));
         for (std::size_t k = 0; k < split.id.size(); ++k)
@@ -237,9 +252,10 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
         if (mpi->rank() == 0)
             std::printf("  %s: %zu grains, %d steps: largest position difference split vs one "
                         "process %.3g m, bound from eta0 = %.3g m: %.3g m; contacts %.0f / %.0f, "
-                        "wall load %.10g / %.10g N\n",
+                        "wall load %.10g / %.10g N, lid %.12g / %.12g m\n",
                         oneSided ? "one-sided" : "whole bed", reference.mass.size(), steps, largest,
-                        eta0, bound, splitContacts, contacts, splitWallForce, wallForce);
+                        eta0, bound, splitContacts, contacts, splitWallForce, wallForce, lidSplit,
+                        lidReference);
     }
 }
 
