@@ -58,12 +58,12 @@ void EngineImpl<Exec>::computeBondForces(double dt)
                 exec_.sumOf(count, BrokenBondCreep{bonds_.view(), flags, kBondCreepNormal + c});
         if (halo_)
         {
-            halo_->bondsBroken +=
-                exec_.sumOf(count, BondRankShare{bonds_.view(), grains_.integer(fFlag), flags});
             Vec<double>& share = bondReadback_; // per bond: its share if broken, else 0
             share.resize(std::size_t(count));
             Exec::forEach(count, StoreBondShare{bonds_.view(), grains_.integer(fFlag), flags,
                                                 thrust::raw_pointer_cast(share.data())});
+            halo_->bondsBroken +=
+                exec_.sumOf(count, ComponentOf{thrust::raw_pointer_cast(share.data())});
             for (int c = 0; c < 4; ++c)
                 halo_->brokenCreep[std::size_t(c)] += exec_.sumOf(
                     count, BrokenBondCreep{bonds_.view(), thrust::raw_pointer_cast(share.data()),
@@ -213,16 +213,7 @@ BondData EngineImpl<Exec>::bonds() const
               });
     auto component = [&](int c, std::size_t b) { return state[std::size_t(c) * count + b]; };
     // Over MPI ranks: the bonds whose first grain this rank owns (each bond on one rank).
-    std::vector<char> reported(std::size_t(count), 1);
-    if (halo_)
-    {
-        const std::vector<int> id = grains_.hostInt(fId), flag = grains_.hostInt(fFlag);
-        std::unordered_map<int, int> flagOf;
-        for (std::size_t i = 0; i < id.size(); ++i)
-            flagOf[id[i]] = flag[i];
-        for (int b = 0; b < count; ++b)
-            reported[std::size_t(b)] = flagOf.at(first[std::size_t(b)]) != kFlagGhost;
-    }
+    const std::vector<char> reported = reportedBonds();
     for (const int k : order)
     {
         const std::size_t b = std::size_t(k);
@@ -303,6 +294,22 @@ BondCounts EngineImpl<Exec>::bondCounts() const
 }
 
 template <class Exec>
+std::vector<char> EngineImpl<Exec>::reportedBonds() const
+{
+    const std::vector<int> first = bonds_.hostFirst();
+    std::vector<char> reported(first.size(), 1);
+    if (!halo_)
+        return reported;
+    const std::vector<int> id = grains_.hostInt(fId), flag = grains_.hostInt(fFlag);
+    std::unordered_map<int, int> flagOf;
+    for (std::size_t i = 0; i < id.size(); ++i)
+        flagOf[id[i]] = flag[i];
+    for (std::size_t b = 0; b < first.size(); ++b)
+        reported[b] = flagOf.at(first[b]) != kFlagGhost;
+    return reported;
+}
+
+template <class Exec>
 BondCounts EngineImpl<Exec>::decomposedBondCounts() const
 {
     // Each bond counted once over the ranks: by the rank that owns its first grain (bonds());
@@ -312,15 +319,11 @@ BondCounts EngineImpl<Exec>::decomposedBondCounts() const
     double apart = 0.0;
     if (count > 0)
     {
-        const std::vector<int> first = bonds_.hostFirst(), id = grains_.hostInt(fId),
-                               flag = grains_.hostInt(fFlag);
-        std::unordered_map<int, int> flagOf;
-        for (std::size_t i = 0; i < id.size(); ++i)
-            flagOf[id[i]] = flag[i];
+        const std::vector<char> reported = reportedBonds();
         std::vector<double> touching(static_cast<std::size_t>(count));
         thrust::copy(bondReadback_.begin() + 6L * count, bondReadback_.end(), touching.begin());
         for (int b = 0; b < count; ++b)
-            if (flagOf.at(first[std::size_t(b)]) != kFlagGhost && touching[std::size_t(b)] == 0.0)
+            if (reported[std::size_t(b)] && touching[std::size_t(b)] == 0.0)
                 apart += 1.0;
     }
     double radiusSum = 0.0;

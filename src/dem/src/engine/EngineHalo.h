@@ -348,10 +348,10 @@ void EngineImpl<Exec>::redistribute()
 
     // 3. Ghosts afresh: each owned grain to every other rank whose box lies within reach, and
     // to the owners of its bond partners.
-    double bMax = 0.0;
-    for (int i = 0; i < n; ++i)
-        bMax = std::max(bMax, old.reals[fRadius][i] + old.reals[fCoreHalfLength][i]);
-    const double reach = 2.0 * comm.max(bMax) + params_.neighbourSkin;
+    // (the largest bounding radius as the cell grid measures it, of the grains before the move)
+    const double reach =
+        2.0 * comm.max(exec_.maxOf(n, BoundingRadiusOf{grains_.real(fRadius), halfLengths()})) +
+        params_.neighbourSkin;
     HostGrains next;
     next.resize(ownedCount);
     std::vector<std::vector<double>> ghostSend(static_cast<std::size_t>(ranks));

@@ -225,9 +225,12 @@ private:
     void refreshGhosts();
     //- The decomposed part of exportState / importState (restart on the same decomposition).
     void exportHalo(SystemState& s) const;
+    void importHalo(const SystemState& s);
     //- bondCounts over MPI ranks (EngineBonds.h).
     BondCounts decomposedBondCounts() const;
-    void importHalo(const SystemState& s);
+    //- Per bond in store order: 1 for the bonds this rank reports (all on one process; over
+    //- MPI ranks those whose first grain it owns, so each bond is reported by one rank).
+    std::vector<char> reportedBonds() const;
 
     // Read-back kernels need non-const views of storage they do not modify.
     EngineImpl& self() const { return const_cast<EngineImpl&>(*this); }
