@@ -6,8 +6,10 @@
 // Over MPI ranks (Parameters::decomposition, src/dem/README.md): each rank's System owns the
 // grains in its box; set-up, step() and the read-backs that reduce (grainCount, wall,
 // contactCount, prescribedGrainForceX/ImpulseX, criticalTimeStep) are collective; grains()
-// returns this rank's own; pairCount is this rank's list. Fluid coupling, flags, restart, bonds
-// and largestOverlap are refused for now.
+// returns this rank's own; pairCount is this rank's list; deposit and depositFluidReaction
+// take the grid of the whole mesh on every rank and return the whole grid's values (summed over
+// the ranks), setFluid takes the whole grid's fields. Flags, addBonds, setGrainVelocities and
+// largestOverlap are refused for now.
 //
 // Typical use:
 //     dem::System dem(params);

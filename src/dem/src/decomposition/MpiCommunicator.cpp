@@ -5,6 +5,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <string>
 
 namespace dem
@@ -91,6 +92,14 @@ public:
     }
     double sum(double value) const override { return reduce(value, MPI_SUM); }
     double max(double value) const override { return reduce(value, MPI_MAX); }
+    void sumInPlace(double* values, long count) const override
+    {
+        // In slices: MPI counts are int
+        const long slice = 1L << 28;
+        for (long first = 0; first < count; first += slice)
+            MPI_Allreduce(MPI_IN_PLACE, values + first, int(std::min(slice, count - first)),
+                          MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    }
     long long exclusiveSum(long long value) const override
     {
         long long out = 0;

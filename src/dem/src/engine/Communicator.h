@@ -23,6 +23,8 @@ public:
     virtual int localRank() const = 0;
     virtual double sum(double value) const = 0;
     virtual double max(double value) const = 0;
+    //- values[0..count) replaced by their sums over all ranks (host memory).
+    virtual void sumInPlace(double* values, long count) const = 0;
     //- Sum of value over the ranks below this one.
     virtual long long exclusiveSum(long long value) const = 0;
     //- send[r] goes to rank r (send.size() == size()); returns what each rank sent here. With

@@ -212,6 +212,8 @@ private:
     // ---- over MPI ranks (EngineHalo.h) --------------------------------------------------------
     double globalMax(double v) const { return halo_ ? halo_->comm->max(v) : v; }
     double globalSum(double v) const { return halo_ ? halo_->comm->sum(v) : v; }
+    //- Decomposed: each value replaced by its sum over the ranks (else unchanged).
+    void sumOverRanks(Vec<double>& values) const;
     int ownedCount() const { return grains_.size() - (halo_ ? halo_->ghostCount : 0); }
     //- Throw for a call that a decomposed engine does not offer yet.
     void refuseDecomposed(const char* what) const;

@@ -338,7 +338,9 @@ template <class Exec>
 std::size_t EngineImpl<Exec>::contactCount() const
 {
     const int n = grains_.size();
-    if (grainsAtLastBuild_ != n || needRebuild_)
+    // Decomposed: the answer is collective, so every rank returns early or none does
+    const bool stale = grainsAtLastBuild_ != n || needRebuild_;
+    if (halo_ ? globalMax(stale ? 1.0 : 0.0) > 0.0 : stale)
         return 0;
     EngineImpl& e = self();
     if (!halo_)
@@ -405,13 +407,27 @@ GridView EngineImpl<Exec>::fluidGridView(const UniformGrid& grid, const char* ca
 }
 
 template <class Exec>
+void EngineImpl<Exec>::sumOverRanks(Vec<double>& values) const
+{
+    if (!halo_)
+        return;
+    // Through host memory: the communicator takes host buffers (no CUDA-aware MPI assumed)
+    std::vector<double> host(values.size());
+    thrust::copy(values.begin(), values.end(), host.begin());
+    halo_->comm->sumInPlace(host.data(), long(host.size()));
+    thrust::copy(host.begin(), host.end(), values.begin());
+}
+
+template <class Exec>
 void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                                double* predictedPorosity, double* meanVelocity,
                                double* solidVolume) const
 {
-    refuseDecomposed("deposit");
     const GridView g = fluidGridView(grid, "deposit");
+    // Decomposed: every rank deposits the grains it owns (not its ghosts) on the whole grid,
+    // and the cells' sums are added over the ranks before they are finished
     const int n = grains_.size();
+    const int* ghostFlags = halo_ ? self().grains_.integer(fFlag) : nullptr;
     const long cells = g.cellCount();
     EngineImpl& e = self();
     Vec<double>& solid = depositSolid_;
@@ -427,12 +443,15 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
         if (withVelocity)
             thrust::fill(exec_.policy(), momentum.begin(), momentum.end(), 0.0);
         Exec::forEachScatter(
-            n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
-                             e.grains_.real(fRadius),
-                             capsules ? e.grains_.real(fCoreHalfLength) : nullptr,
-                             e.grains_.real(fOrientation), g, lookAhead,
-                             thrust::raw_pointer_cast(solid.data()),
-                             withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr});
+            n,
+            DepositGrains{
+                e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity), e.grains_.real(fRadius),
+                capsules ? e.grains_.real(fCoreHalfLength) : nullptr, e.grains_.real(fOrientation),
+                g, lookAhead, thrust::raw_pointer_cast(solid.data()),
+                withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr, ghostFlags});
+        sumOverRanks(solid);
+        if (withVelocity)
+            sumOverRanks(momentum);
         Exec::forEach(
             int(cells),
             FinishDeposit{thrust::raw_pointer_cast(solid.data()),
@@ -457,7 +476,8 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
 template <class Exec>
 void EngineImpl<Exec>::setFluid(const UniformGrid& grid, const FluidFields& fluid)
 {
-    refuseDecomposed("setFluid");
+    // Decomposed: every rank passes the whole grid's fields (the same on each) and interpolates
+    // them to its own grains
     const GridView g = fluidGridView(grid, "setFluid");
     if (!fluid.forceDensity)
         throw Error("setFluid: forceDensity is null");
@@ -526,16 +546,17 @@ GrainFluidForce EngineImpl<Exec>::grainFluidForce() const
 template <class Exec>
 void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* reaction) const
 {
-    refuseDecomposed("depositFluidReaction");
     const GridView g = fluidGridView(grid, "depositFluidReaction");
     const long values = 3 * g.cellCount();
     Vec<double>& out = reactionScratch_;
     out.resize(values);
     thrust::fill(exec_.policy(), out.begin(), out.end(), 0.0);
     if (fluid_.active)
-        Exec::forEachScatter(
-            grains_.size(),
-            DepositFluidReaction{grainFluidForce(), g, thrust::raw_pointer_cast(out.data())});
+        Exec::forEachScatter(grains_.size(),
+                             DepositFluidReaction{grainFluidForce(), g,
+                                                  thrust::raw_pointer_cast(out.data()),
+                                                  halo_ ? self().grains_.integer(fFlag) : nullptr});
+    sumOverRanks(out);
     thrust::copy(out.begin(), out.end(), reaction);
 }
 

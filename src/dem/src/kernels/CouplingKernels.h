@@ -29,9 +29,13 @@ struct DepositGrains
     double lookAhead; //!< deposit at x + lookAhead * v (0: current position)
     double* solid;    //!< per cell
     double* momentum; //!< 3 per cell interleaved, or nullptr
+    //- Decomposed: the grains' flags, whose ghosts are left to their owners (nullptr: all)
+    const int* flag = nullptr;
 
     DEM_HD void operator()(int i) const
     {
+        if (flag && flag[i] == kFlagGhost)
+            return;
         const double r = radius[i];
         const double h = coreHalfLength ? coreHalfLength[i] : 0.0;
         const long s = position.stride;

@@ -113,9 +113,13 @@ struct DepositFluidReaction
     GrainFluidForce force;
     GridView grid;
     double* reaction; //!< 3 per cell interleaved
+    //- Decomposed: the grains' flags, whose ghosts are left to their owners (nullptr: all)
+    const int* flag = nullptr;
 
     DEM_HD void operator()(int i) const
     {
+        if (flag && flag[i] == kFlagGhost)
+            return;
         const Vector3d perCell = -force(i) / grid.cellVolume();
         const TrilinearStencil s = trilinearStencil(grid, force.position(i));
         for (int c = 0; c < 8; ++c)
