@@ -1,10 +1,10 @@
-"""The command line a new user tries (issue 24 item 3): every solver's -help
-offers neither -parallel nor -dry-run (neither works: the grains live in one
-DEM system on the whole mesh, and OpenFOAM's dry run swaps the mesh for a
-one-dimensional column); given anyway, or started by mpirun with more than
-one process, the solver stops at once saying that MPI runs are not supported
-yet and what to do instead. Real binaries on tests/cases/grainColumn
-(nsDemFoam: tests/cases/fixedBed)."""
+"""The command line a new user tries (issue 24 item 3, issue 28): every
+solver's -help offers -parallel (decomposed runs, tests/mpi) but not -dry-run
+(OpenFOAM's dry run swaps the mesh for a one-dimensional column the grains'
+box cannot take); started by mpirun with more than one process but without
+-parallel (every process would run the whole case), or given -dry-run, the
+solver stops at once saying why and what to do instead. Real binaries on
+tests/cases/grainColumn (nsDemFoam: tests/cases/fixedBed)."""
 
 import os
 import subprocess
@@ -49,11 +49,12 @@ def call(args, env_extra=None):
 
 @pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("help_option", ("-help", "-help-full"))
-def test_help_offers_no_parallel_and_no_dry_run(solver, help_option):
+def test_help_offers_parallel_and_no_dry_run(solver, help_option):
     rc, out = call([solver, help_option])
     assert rc == 0, out
     assert "-case" in out  # the help itself
-    for option in ("-parallel", "-dry-run", "-roots", "-decomposeParDict"):
+    assert "-parallel" in out
+    for option in ("-dry-run", "-dry-run-write"):
         assert option not in out, (option, out)
 
 
@@ -68,18 +69,6 @@ def test_the_valid_case_runs(case, solver):
 
 
 @pytest.mark.parametrize("solver", SOLVERS)
-@pytest.mark.parametrize("option", ("-parallel", "--parallel"))
-def test_parallel_is_refused_saying_why_and_what_to_do(case, solver, option):
-    rc, out = call([solver, "-case", case.path, option])
-    text = fatal_message(out)
-    assert rc != 0
-    assert "MPI runs (-parallel) are not supported yet" in text
-    assert f"Run '{solver}' without mpirun and without -parallel" in text
-    assert "undecomposed case" in text and "threads" in text
-    assert "Create time" not in out  # refused before anything is read
-
-
-@pytest.mark.parametrize("solver", SOLVERS)
 @pytest.mark.parametrize("variable", MPI_SIZE_VARIABLES)
 def test_mpirun_without_parallel_is_refused(case, solver, variable):
     """mpirun -np 4 <solver> (no -parallel) would run four copies of the
@@ -88,9 +77,10 @@ def test_mpirun_without_parallel_is_refused(case, solver, variable):
     rc, out = call([solver, "-case", case.path], {variable: "4"})
     text = fatal_message(out)
     assert rc != 0
-    assert "Started by mpirun with 4 processes: MPI runs are not supported yet" in text
+    assert "Started by mpirun with 4 processes but without -parallel" in text
     assert "overwrite the others' files" in text
-    assert f"Run '{solver}' without mpirun" in text
+    assert f"mpirun -np 4 {solver} -parallel" in text and "decomposePar" in text
+    assert f"run '{solver}' alone on the undecomposed case" in text
 
 
 @pytest.mark.parametrize("solver", SOLVERS)

@@ -51,8 +51,9 @@ int main(int argc, char *argv[])
         " granular material (coupled to DEM grains through solidPhase)"
     );
 
-    // No -parallel and no -dry-run (addCheckCaseOptions.H not included):
-    // refused with the reason and what to do instead (solverOptions)
+    // No -dry-run (addCheckCaseOptions.H not included), and no mpirun
+    // without -parallel: refused with the reason and what to do instead
+    // (solverOptions)
     solverOptions::check(argc, argv);
 
     #include "postProcess.H"

@@ -30,8 +30,9 @@ int main(int argc, char *argv[])
 {
     argList::addNote("DEM grains without pore fluid (dry runs)");
 
-    // No -parallel and no -dry-run (addCheckCaseOptions.H not included):
-    // refused with the reason and what to do instead (solverOptions)
+    // No -dry-run (addCheckCaseOptions.H not included), and no mpirun
+    // without -parallel: refused with the reason and what to do instead
+    // (solverOptions)
     solverOptions::check(argc, argv);
 
     #include "setRootCaseLists.H"

@@ -53,7 +53,9 @@ int main(int argc, char *argv[])
         " run-time selected drag law)"
     );
 
-    // No -parallel and no -dry-run: refused with the reason (solverOptions)
+    // No -dry-run (addCheckCaseOptions.H not included), and no mpirun
+    // without -parallel: refused with the reason and what to do instead
+    // (solverOptions)
     solverOptions::check(argc, argv);
 
     #include "postProcess.H"

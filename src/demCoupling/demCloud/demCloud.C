@@ -52,17 +52,31 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
         "while setting up the grains of " + settings_.dict().objectPath(),
         [&]
         {
-            system_.reset
-            (
-                new dem::System(settings_.parameters(mesh.time().value()))
-            );
+            // Decomposed: the grains' boxes are the mesh's parts (meshGrid)
+            dem::Parameters p(settings_.parameters(mesh.time().value()));
+            p.decomposition.ranks = grid_.rankBoxes();
+            if (Pstream::parRun() && p.bonds.enabled)
+            {
+                FatalIOErrorInFunction(settings_.dict())
+                    << "Bonds ('bonds' in " << settings_.dict().name()
+                    << ") are not available with -parallel yet: their"
+                    << " files are not gathered over the ranks. Run the"
+                    << " case on one process (threads or a GPU)" << nl
+                    << exit(FatalIOError);
+            }
+            system_.reset(new dem::System(p));
             settings_.walls().addTo(*system_);
             const demStart start(mesh.time(), settings_, grid_.grid(), *system_);
             topWall0_ = start.topWall0();
             displacement0_ = start.displacement0();
             settings_.checkTimeStep(*system_);
             Info<< "    backend " << system_->backendName() << ", "
-                << system_->threadCount() << " thread(s)" << endl;
+                << system_->threadCount() << " thread(s)";
+            if (Pstream::parRun())
+            {
+                Info<< " on each of " << Pstream::nProcs() << " ranks";
+            }
+            Info<< endl;
 
             const label n = system_->grainCount();
             if (settings_.surfaceOutputDefaulted() && !settings_.surfaceOutput(n))
@@ -320,9 +334,12 @@ dem::GrainData Foam::demCloud::libraryGrains() const
 dem::GrainData Foam::demCloud::grains() const
 {
     dem::GrainData g = libraryGrains();
-    for (size_t i = 0; i < g.displacement.size(); ++i)
+    for (size_t k = 0; k < g.id.size(); ++k)
     {
-        g.displacement[i] -= displacement0_[i];
+        for (int d = 0; d < 3; ++d)
+        {
+            g.displacement[3*k + d] -= displacement0_[3*size_t(g.id[k]) + d];
+        }
     }
     return g;
 }
@@ -366,13 +383,16 @@ Foam::scalar Foam::demCloud::boxArea() const
 
 Foam::scalar Foam::demCloud::meanDiameter() const
 {
+    // Over all ranks (collective)
     const dem::GrainData g = libraryGrains();
     scalar sum = 0;
     for (const double r : g.radius)
     {
         sum += 2*r;
     }
-    return g.radius.empty() ? 0 : sum/g.radius.size();
+    reduce(sum, sumOp<scalar>());
+    const label n = returnReduce(label(g.radius.size()), sumOp<label>());
+    return n == 0 ? 0 : sum/n;
 }
 
 

@@ -214,8 +214,16 @@ void Foam::demSettings::applyGrainFlags(dem::System& system) const
         return;
     }
 
-    const dem::GrainData g = system.grains();
     const dictionary& flags = properties_.subDict("grainFlags");
+    if (Pstream::parRun())
+    {
+        FatalIOErrorInFunction(flags)
+            << "'grainFlags' in " << properties_.name() << " is not"
+            << " available with -parallel yet (the DEM library sets flags on"
+            << " one process only). Run the case on one process (threads or"
+            << " a GPU)" << nl << exit(FatalIOError);
+    }
+    const dem::GrainData g = system.grains();
     for (const entry& e : flags)
     {
         if (!e.isDict())

@@ -20,18 +20,67 @@ const char* const Foam::demStart::periodicBoxKey = "demCloud.periodicBox";
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::fileName Foam::demStart::caseTimePath() const
+{
+    // Decomposed: the case directory's own time (a serial packing starts a
+    // parallel run; the grains of a decomposed run are written there)
+    return runTime_.globalPath()/runTime_.timeName();
+}
+
+
 void Foam::demStart::addGrainsFromFile(dem::System& system) const
 {
+    const fileName path(caseTimePath()/"grains");
+    // Every rank reads and checks the file alike; the master adds them all
+    // (the call is collective) and the first step sends each to its owner
     const grainStartState start
     (
-        runTime_.timePath()/"grains", settings_.dict(), grid_,
-        settings_.walls().specs()
+        path, settings_.dict(), grid_, settings_.walls().specs()
     );
-    system.addGrains(start.grains());
-    start.checkOverlaps(system);
-    Info<< "    " << start.grains().size() << " grains from "
-        << runTime_.timePath()/"grains" << endl;
+    system.addGrains
+    (
+        Pstream::master() ? start.grains() : std::vector<dem::GrainInit>()
+    );
+    if (!Pstream::parRun())
+    {
+        start.checkOverlaps(system);
+    }
+    else if (Pstream::master())
+    {
+        // The overlap check reads the whole packing at once: a one-process
+        // system of the same grains, on the master
+        dem::Parameters p(system.parameters());
+        p.decomposition.ranks = {{1, 1}};
+        dem::System whole(p);
+        settings_.walls().addTo(whole);
+        whole.addGrains(start.grains());
+        start.checkOverlaps(whole);
+    }
+    Info<< "    " << start.grains().size() << " grains from " << path << endl;
     settings_.applyGrainFlags(system);
+}
+
+
+std::vector<double> Foam::demStart::displacementById
+(
+    const dem::System& system
+)
+{
+    // Each rank's own grains, then summed: every grain's on every rank
+    const dem::GrainData g(system.grains());
+    scalarField byId(3*system.grainCount(), 0.0);
+    for (size_t k = 0; k < g.id.size(); ++k)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            byId[3*g.id[k] + d] = g.displacement[3*k + d];
+        }
+    }
+    if (Pstream::parRun())
+    {
+        reduce(byId, sumOp<scalarField>());
+    }
+    return std::vector<double>(byId.begin(), byId.end());
 }
 
 
@@ -92,7 +141,7 @@ void Foam::demStart::startFromState(const fileName& path, dem::System& system)
     system.setTimeStep(p.timeStep);
     system.setViscousDrag(p.viscousDrag);
     settings_.applyGrainFlags(system);
-    displacement0_ = system.grains().displacement;
+    displacement0_ = displacementById(system);
     if (settings_.walls().top() >= 0)
     {
         topWall0_ = system.wall(settings_.walls().top()).position;
@@ -121,7 +170,7 @@ void Foam::demStart::checkGrainsInsideMesh
             if (!(x >= lo && x <= hi))
             {
                 FatalErrorInFunction
-                    << "Grain " << label(i) << " of " << source << " at ("
+                    << "Grain " << g.id[i] << " of " << source << " at ("
                     << g.position[3*i] << " " << g.position[3*i + 1] << " "
                     << g.position[3*i + 2] << ") lies outside the mesh, "
                     << vector::componentNames[d] << " in [" << lo << ", "
@@ -174,7 +223,9 @@ void Foam::demStart::checkStateMatchesCase
     // In a restart, the grains file written beside it at the same time
     // lists as many grains (a prepared packing copied into a case may sit
     // beside that case's own start grains)
-    const grainsFile beside(path.path()/"grains");
+    // (decomposed: the grains of the case directory's time, where a
+    // decomposed run writes them all; every rank reads the same file)
+    const grainsFile beside(caseTimePath()/"grains");
     if (!restart || !beside.found())
     {
         return;
@@ -208,8 +259,33 @@ Foam::demStart::demStart
     fromState_(false),
     topWall0_(0)
 {
+    // Decomposed: each rank's part in its processor directory, on all ranks
+    // or none
     const fileName statePath(runTime.timePath()/"demState");
     fromState_ = isFile(statePath);
+    if (Pstream::parRun())
+    {
+        const label parts = returnReduce(label(fromState_), sumOp<label>());
+        if (parts != 0 && parts != Pstream::nProcs())
+        {
+            FatalErrorInFunction
+                << "Only " << parts << " of " << Pstream::nProcs()
+                << " processor directories hold a demState at time "
+                << runTime.timeName() << " (this rank: "
+                << (fromState_ ? "" : "none at ") << statePath << ")." << nl
+                << "Restart from a time every rank wrote, or remove the"
+                << " processor directories' demState files of this time to"
+                << " start from " << caseTimePath()/"grains" << nl
+                << exit(FatalError);
+        }
+        if (parts == 0 && isFile(caseTimePath()/"demState"))
+        {
+            WarningInFunction
+                << caseTimePath()/"demState" << " is a one-process state:"
+                << " a decomposed run starts from the grains file beside it,"
+                << " without the contacts' history" << endl;
+        }
+    }
     if (fromState_)
     {
         startFromState(statePath, system);

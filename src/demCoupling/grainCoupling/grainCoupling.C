@@ -326,7 +326,7 @@ void Foam::grainCoupling::fixedPressureCells
     DynamicList<label> fixed;
     for (label gi = 0; gi < grid.size(); ++gi)
     {
-        if (grid.layerOf(gi) >= kWall)
+        if (grid.layerOf(gi) >= kWall && grid.cellOf(gi) >= 0)
         {
             fixed.append(grid.cellOf(gi));
         }

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "grainWriter.H"
+#include "grainGather.H"
 #include "demStart.H"
 #include "demStateFile.H"
 #include "demLibraryCall.H"
@@ -36,7 +37,7 @@ Foam::grainWriter::grainWriter
 
 void Foam::grainWriter::writeGrains
 (
-    const dem::GrainData& g,
+    const dem::GrainData& ownGrains,
     const dem::System& system
 ) const
 {
@@ -44,17 +45,30 @@ void Foam::grainWriter::writeGrains
     atomicFile::killPoint("amongFields");
 
     const Time& runTime = runTime_;
-    const fileName dir(runTime.timePath());
-    mkDir(dir);
 
     // Backs up the DEM step's own check: nothing non-finite is written (the
-    // time then has no demState and stays incomplete)
-    finiteCheck::grains(g, runTime.value(), settings_.dict().objectPath());
+    // time then has no demState and stays incomplete); each rank checks its
+    // own grains
+    finiteCheck::grains
+    (
+        ownGrains, runTime.value(), settings_.dict().objectPath()
+    );
+
+    // Decomposed: every grain in the case's own files, written by the master
+    // (the time of the case directory itself, beside reconstructPar's
+    // fields; each processor directory holds its rank's demState)
+    const dem::GrainData g(grainGather::toMaster(ownGrains));
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName dir(runTime.globalPath()/runTime.timeName());
+    mkDir(dir);
     grainsFile(dir/"grains").write(g);
     // ParaView files in <case>/postProcessing/grains: a VTK file series
     // lists files beside it, not in the time directories, and VTK/, where
     // foamToVTK writes, is removed whole by 'foamToVTK -overwrite'
-    const fileName vtkDir(runTime.path()/outputDir);
+    const fileName vtkDir(runTime.globalPath()/outputDir);
     mkDir(vtkDir);
     const fileName vtp(vtkDir/("grains_" + runTime.timeName() + ".vtp"));
     grainVtkWriter::writeVtp(vtp, g, settings_.asciiOutput());

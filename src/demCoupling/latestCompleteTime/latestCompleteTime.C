@@ -69,18 +69,36 @@ void Foam::latestCompleteTime::endWrite(const Time& runTime)
 
 Foam::label Foam::latestCompleteTime::setAside(const argList& args)
 {
+    // Decomposed: controlDict in the case directory, the times in each
+    // processor directory
+    const fileName caseDir(args.rootPath()/args.globalCaseName());
     const fileName casePath(args.path());
-    if (args.found("time") || !startsFromLatestTime(casePath))
+    if (args.found("time") || !startsFromLatestTime(caseDir))
     {
         return 0;
     }
 
     // Time directories in order (findTimes lists 'constant' too)
-    instantList times(TimePaths::findTimes(casePath));
-    if (times.size() && times.first().name() == "constant")
+    const auto timesOf = [](const fileName& dir)
     {
-        times = instantList(SubList<instant>(times, times.size() - 1, 1));
-    }
+        instantList times(TimePaths::findTimes(dir));
+        if (times.size() && times.first().name() == "constant")
+        {
+            times = instantList(SubList<instant>(times, times.size() - 1, 1));
+        }
+        return times;
+    };
+    const auto moveAside = [](const fileName& dir)
+    {
+        if (!mvBak(dir, "incomplete"))
+        {
+            FatalErrorInFunction
+                << "Cannot rename the incomplete time directory " << dir
+                << nl << exit(FatalError);
+        }
+    };
+
+    const instantList times(timesOf(casePath));
     label moved = 0;
     for (label i = times.size() - 1; i >= 0; --i)
     {
@@ -91,12 +109,7 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
             rm(dir/markName);
             break;
         }
-        if (!mvBak(dir, "incomplete"))
-        {
-            FatalErrorInFunction
-                << "Cannot rename the incomplete time directory " << dir
-                << nl << exit(FatalError);
-        }
+        moveAside(dir);
         ++moved;
         Warning
             << "Time " << times[i].name() << " is incomplete (the run"
@@ -105,7 +118,38 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
             << " to " << dir << ".incomplete and not used for the restart"
             << endl;
     }
-    if (moved == times.size())
+
+    // Decomposed: the latest time complete on every rank; later times
+    // (complete on some ranks only) are set aside everywhere, with the
+    // grains the master wrote into the case directory for them
+    scalar latest = moved < times.size()
+        ? times[times.size() - 1 - moved].value() : -GREAT;
+    if (Pstream::parRun())
+    {
+        latest = returnReduce(latest, minOp<scalar>());
+        for (label i = times.size() - 1 - moved; i >= 0; --i)
+        {
+            if (times[i].value() <= latest)
+            {
+                break;
+            }
+            moveAside(casePath/times[i].name());
+            ++moved;
+        }
+        if (Pstream::master())
+        {
+            for (const instant& t : timesOf(caseDir))
+            {
+                if (t.value() > latest && isDir(caseDir/t.name()))
+                {
+                    moveAside(caseDir/t.name());
+                }
+            }
+        }
+        reduce(moved, sumOp<label>());
+    }
+
+    if (latest == -GREAT)
     {
         FatalErrorInFunction
             << "Every time directory of " << casePath << " is incomplete"
@@ -115,8 +159,13 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
     if (moved)
     {
         Info<< "startFrom latestTime: restarting from the latest complete"
-            << " time " << times[times.size() - 1 - moved].name() << nl
-            << endl;
+            << " time " << latest;
+        if (Pstream::parRun())
+        {
+            Info<< " (complete on every rank; " << moved << " processor"
+                << " time directories set aside)";
+        }
+        Info<< nl << endl;
     }
     return moved;
 }

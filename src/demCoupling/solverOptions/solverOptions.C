@@ -5,6 +5,7 @@
 
 #include "solverOptions.H"
 #include "argList.H"
+#include "dem/Mpi.h"
 #include "error.H"
 
 #include <algorithm>
@@ -62,37 +63,30 @@ int Foam::solverOptions::mpiProcesses()
 
 void Foam::solverOptions::check(int argc, char* argv[])
 {
-    argList::noParallel();
-
     const word solver(argc > 0 ? fileName(argv[0]).name() : word("solver"));
+    const bool parallel = given(argc, argv, "parallel");
 
-    // What to do instead of an MPI run, the same for both refusals
-    const string serially
-    (
-        "Run '" + solver + "' without mpirun and without -parallel, on the"
-        " undecomposed case (no decomposePar). For speed, the grains use"
-        " CPU threads ('threads' in constant/demProperties, or"
-        " OMP_NUM_THREADS) or a GPU ('backend cuda')."
-    );
-
-    if (given(argc, argv, "parallel"))
+    if (parallel && !dem::mpiBuild())
     {
         FatalErrorInFunction
-            << "MPI runs (-parallel) are not supported yet: " << solver
-            << " runs on one process, its grains in one DEM system on the"
-            << " whole mesh." << nl << serially.c_str() << nl
-            << exit(FatalError);
+            << "-parallel: the DEM library of " << solver << " was built"
+            << " without MPI, so its grains cannot be split over ranks."
+            << nl << "Install libopenmpi-dev and rebuild (./Allwmake), or"
+            << " run without mpirun and -parallel on the undecomposed case"
+            << nl << exit(FatalError);
     }
 
     const int n = mpiProcesses();
-    if (n > 1)
+    if (n > 1 && !parallel)
     {
         FatalErrorInFunction
-            << "Started by mpirun with " << n << " processes: MPI runs are"
-            << " not supported yet, and without -parallel each process"
-            << " would run the whole case and overwrite the others' files."
-            << nl << serially.c_str() << nl
-            << exit(FatalError);
+            << "Started by mpirun with " << n << " processes but without"
+            << " -parallel: each process would run the whole case and"
+            << " overwrite the others' files." << nl
+            << "Decompose the case (decomposePar, system/decomposeParDict:"
+            << " method simple or hierarchical) and run 'mpirun -np " << n
+            << " " << solver << " -parallel', or run '" << solver
+            << "' alone on the undecomposed case" << nl << exit(FatalError);
     }
 
     if (given(argc, argv, "dry-run") || given(argc, argv, "dry-run-write"))

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demTable.H"
+#include "OStringStream.H"
 #include "inputChecks.H"
 #include "demLibraryCall.H"
 #include "demCloud.H"
@@ -59,6 +60,15 @@ bool Foam::functionObjects::demTable::write()
         [&]
         {
             const demCloud& cloud = mesh_.lookupObject<demCloud>("demCloud");
+            // Every rank makes the row (it sums over the ranks); the master
+            // writes it, the only rank with the file (writeFile)
+            OStringStream row;
+            row.precision(writePrecision_);
+            writeRow(row, cloud);
+            if (!Pstream::master())
+            {
+                return true;
+            }
             Ostream& os = file();
             if (!headerWritten_)
             {
@@ -72,7 +82,7 @@ bool Foam::functionObjects::demTable::write()
                 headerWritten_ = true;
             }
             writeCurrentTime(os);
-            writeRow(os, cloud);
+            os.writeQuoted(row.str(), false);
             os << endl;
             return true;
         }

@@ -128,6 +128,13 @@ void Foam::functionObjects::grainDiagnostics::writeRow
         }
     }
 
+    // Decomposed: each rank's own grains, summed over the ranks
+    reduce(shiftX, sumOp<scalar>());
+    reduce(kinetic, sumOp<scalar>());
+    reduce(grainVolume, sumOp<scalar>());
+    reduce(nPrescribed, sumOp<label>());
+    const label nAll = returnReduce(n, sumOp<label>());
+
     const scalar top = cloud.topWallPosition();
     const scalar height =
         (cloud.hasTopWall() && bottom < GREAT) ? top - bottom : 0;
@@ -170,7 +177,7 @@ void Foam::functionObjects::grainDiagnostics::writeRow
         << (cloud.hasTopWall() ? top : 0) << tab
         << pMin << tab << pMean << tab << pMax << tab
         << kinetic << tab
-        << (n ? 2.0*dem.contactCount()/n : 0) << tab
+        << (nAll ? 2.0*dem.contactCount()/nAll : 0) << tab
         << cloud.particleStepsPerSecond() << tab
         << (grainVolume > 0 ? deposited/grainVolume - 1 : 0);
 }

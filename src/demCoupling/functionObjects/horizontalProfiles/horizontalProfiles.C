@@ -43,8 +43,13 @@ Foam::scalarField Foam::functionObjects::horizontalProfiles::layerMean
 
     for (label gi = 0; gi < grid.size(); ++gi)
     {
-        mean[grid.layerOf(gi)] += f[grid.cellOf(gi)];
+        if (grid.cellOf(gi) >= 0)
+        {
+            mean[grid.layerOf(gi)] += f[grid.cellOf(gi)];
+        }
     }
+    // Decomposed: each rank's cells, summed over the ranks
+    reduce(mean, sumOp<scalarField>());
     return mean/scalar(g.n[0]*g.n[1]);
 }
 
@@ -100,6 +105,10 @@ bool Foam::functionObjects::horizontalProfiles::write()
     for (label gi = 0; gi < grid.size(); ++gi)
     {
         const label c = grid.cellOf(gi);
+        if (c < 0)
+        {
+            continue;
+        }
         const label layer = grid.layerOf(gi);
         if (haveUs)
         {
@@ -112,13 +121,15 @@ bool Foam::functionObjects::horizontalProfiles::write()
             forceZ[layer] -= (1 - phiC)*tgradp()[c].z();
         }
     }
+    reduce(Usx, sumOp<scalarField>());
+    reduce(forceZ, sumOp<scalarField>());
     Usx /= scalar(g.n[0]*g.n[1]);
     forceZ /= scalar(g.n[0]*g.n[1]);
 
     // Grain x-displacement binned by the grains' current heights
     const dem::GrainData grains = cloud.grains();
     scalarField shift(nz, Zero);
-    labelList count(nz, Zero);
+    labelField count(nz, Zero);
     for (size_t i = 0; i < grains.radius.size(); ++i)
     {
         const label layer = label((grains.position[3*i + 2] - g.origin[2])/dz);
@@ -127,6 +138,13 @@ bool Foam::functionObjects::horizontalProfiles::write()
             shift[layer] += grains.displacement[3*i];
             ++count[layer];
         }
+    }
+
+    reduce(shift, sumOp<scalarField>());
+    reduce(count, sumOp<labelField>());
+    if (!Pstream::master())
+    {
+        return true;
     }
 
     const fileName dir

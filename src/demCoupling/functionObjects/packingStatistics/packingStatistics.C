@@ -53,7 +53,10 @@ void Foam::functionObjects::packingStatistics::writeRow
         mass += g.mass[i];
         volume += g.volume[i];
     }
-    const label n = g.mass.size();
+    // Decomposed: each rank's own grains, summed over the ranks
+    reduce(mass, sumOp<scalar>());
+    reduce(volume, sumOp<scalar>());
+    const label n = returnReduce(label(g.mass.size()), sumOp<label>());
     const scalar coordination =
         n ? 2.0*(dem.contactCount() + bonds.apart)/n : 0;
 
