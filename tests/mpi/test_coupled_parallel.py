@@ -31,7 +31,7 @@ file (a serial packing starts a parallel run).
 - A restart from a decomposed time (each rank's demState) continues bit for
   bit as the uninterrupted parallel run.
 - Misuse: mpirun without -parallel, a decomposition the grains cannot follow
-  (cut in z), grainFlags with -parallel: each stops with its message.
+  (cut in z): each stops with its message.
 """
 import math
 import os
@@ -114,22 +114,31 @@ def periodic_difference(a, b):
     return np.max(np.abs(d))
 
 
-@pytest.fixture(scope="module")
-def runs():
-    serial = column("parallel_serial")
+def three_runs(prefix, prepare=lambda c: None):
+    """The column on one process, again from grains moved by eta0 (and with
+    another pressure solver), and on two ranks (reconstructed)."""
+    serial = column(prefix + "_serial")
+    prepare(serial)
     serial.run("darcyDemFoam")
     start = read_grains(serial, "0")
     eta0 = DEM_STEPS * 4 * math.ulp(np.max(np.abs(start[:, :3])))
     u = np.random.default_rng(3).normal(size=(len(start), 3))
     moved = start.copy()
     moved[:, :3] += eta0 * u / np.linalg.norm(u, axis=1)[:, None]
-    perturbed = column("parallel_serial_perturbed", grains=moved, other_solver=True)
+    perturbed = column(prefix + "_serial_perturbed", grains=moved, other_solver=True)
+    prepare(perturbed)
     perturbed.run("darcyDemFoam")
-    split = column("parallel_split")
+    split = column(prefix + "_split")
+    prepare(split)
     split.run("decomposePar")
     log = run_parallel(split)
     split.run("reconstructPar", "-latestTime")
     return serial, perturbed, split, log, eta0
+
+
+@pytest.fixture(scope="module")
+def runs():
+    return three_runs("parallel")
 
 
 def test_split_run_follows_one_process_within_round_off_growth(runs):
@@ -153,6 +162,26 @@ def test_split_run_follows_one_process_within_round_off_growth(runs):
     assert dx <= tol_x
     for name, (diff, tol) in fields.items():
         assert diff <= tol, name
+
+
+def test_grain_flags_follow_one_process():
+    """A fixed base and a lid layer driven sideways (grainFlags), the shear
+    carried across the cut: each rank flags its own grains."""
+    def flags(c):
+        c.set("constant/demProperties", "grainFlags",
+              "{ base { flag fixed; zMax 0.03; } "
+              "lid { flag prescribedVelocity; zMin 0.3; velocity (0.05 0); } }")
+    serial, perturbed, split, log, _ = three_runs("parallel_flags", flags)
+    assert "grain flags lid: prescribedVelocity for" in log
+    t = serial.times()[-1][1]
+    g_one, g_pert, g_split = (read_grains(c, t) for c in (serial, perturbed, split))
+    tol_x, dx = periodic_difference(g_pert, g_one), periodic_difference(g_split, g_one)
+    print(f"flags: grains split vs one process {dx:.3g} m (tolerance {tol_x:.3g})")
+    assert 0 < tol_x < 1e-8 and dx <= tol_x
+    # the driven grains moved with the lid layer: as far as one process's
+    lid = g_one[:, 2] > 0.3
+    assert np.any(lid)
+    assert np.max(np.abs(g_split[lid, 0] - g_one[lid, 0])) <= tol_x
 
 
 def test_function_objects_sum_over_the_ranks(runs):
@@ -211,8 +240,3 @@ def test_misuse_is_refused_with_a_clear_message():
         log[-2000:]
     assert "n (NX NY 1)" in log
 
-    c = column("parallel_flags", end=1e-4)
-    c.set("constant/demProperties", "grainFlags", "{ base { flag fixed; zMax 0.02; } }")
-    c.run("decomposePar")
-    log = run_parallel(c, expect_fail=True)
-    assert "'grainFlags' in" in log and "not available with -parallel yet" in log, log[-2000:]

@@ -214,15 +214,9 @@ void Foam::demSettings::applyGrainFlags(dem::System& system) const
         return;
     }
 
+    // Decomposed: each rank selects among its own grains (by id); the call
+    // is collective
     const dictionary& flags = properties_.subDict("grainFlags");
-    if (Pstream::parRun())
-    {
-        FatalIOErrorInFunction(flags)
-            << "'grainFlags' in " << properties_.name() << " is not"
-            << " available with -parallel yet (the DEM library sets flags on"
-            << " one process only). Run the case on one process (threads or"
-            << " a GPU)" << nl << exit(FatalIOError);
-    }
     const dem::GrainData g = system.grains();
     for (const entry& e : flags)
     {
@@ -249,12 +243,13 @@ void Foam::demSettings::applyGrainFlags(dem::System& system) const
             const scalar z = g.position[3*i + 2];
             if (z >= zLo && z < zHi)
             {
-                selected.push_back(int(i));
+                selected.push_back(g.id[i]);
             }
         }
         system.setGrainFlags(selected, flag, v.x(), v.y());
         Info<< "    grain flags " << e.keyword() << ": "
-            << grainFlagNames[flag] << " for " << selected.size()
+            << grainFlagNames[flag] << " for "
+            << returnReduce(label(selected.size()), sumOp<label>())
             << " grains" << endl;
     }
 }

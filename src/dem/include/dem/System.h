@@ -8,8 +8,8 @@
 // contactCount, prescribedGrainForceX/ImpulseX, criticalTimeStep) are collective; grains()
 // returns this rank's own; pairCount is this rank's list; deposit and depositFluidReaction
 // take the grid of the whole mesh on every rank and return the whole grid's values (summed over
-// the ranks), setFluid takes the whole grid's fields. Flags, addBonds, setGrainVelocities and
-// largestOverlap are refused for now.
+// the ranks), setFluid takes the whole grid's fields; setGrainFlags is collective. addBonds,
+// setGrainVelocities and largestOverlap are refused for now.
 //
 // Typical use:
 //     dem::System dem(params);
@@ -61,6 +61,8 @@ public:
     //- velocity and acceleration are kept, so the wall's motion stays continuous.
     void setWallStress(int wall, double normalStress);
     //- Set the flag of grains `indices`; prescribedVelocity uses (vx, vy) for all of them.
+    //- With a Decomposition the call is collective: each rank may list any grains (by add-order
+    //- index), the union of the lists applies.
     void setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx = 0.0,
                        double vy = 0.0);
     //- Set velocity and angular velocity of grains `indices` (any flag; a driven grain keeps

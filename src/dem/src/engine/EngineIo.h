@@ -3,6 +3,8 @@
 // pressure-gradient force) and the complete state for bit-exact restart.
 #pragma once
 
+#include <unordered_map>
+
 #include <thrust/fill.h>
 
 #include <cmath>
@@ -141,20 +143,41 @@ template <class Exec>
 void EngineImpl<Exec>::setGrainFlags(const std::vector<int>& indices, GrainFlag flag, double vx,
                                      double vy)
 {
-    refuseDecomposed("setGrainFlags");
     const int n = grains_.size();
     const std::vector<int> id = grains_.hostInt(fId);
-    std::vector<int> internal(n);
+    // Decomposed: collective; the union of the ranks' lists applies to the grains each rank
+    // owns (a ghost's flag is kFlagGhost: its owner moves it, and the flag travels with the
+    // grain's record when it changes rank)
+    std::vector<int> all = indices;
+    long total = n;
+    if (halo_)
+    {
+        const Communicator& comm = *halo_->comm;
+        std::vector<std::vector<double>> send(std::size_t(comm.size()),
+                                              std::vector<double>(indices.begin(), indices.end()));
+        all.clear();
+        for (const std::vector<double>& from : comm.exchange(send))
+            for (double index : from)
+                all.push_back(int(index));
+        total = long(halo_->addedGrains);
+    }
+    std::unordered_map<int, int> internal;
+    internal.reserve(std::size_t(n));
     for (int i = 0; i < n; ++i)
         internal[id[i]] = i;
     std::vector<int> flags = grains_.hostInt(fFlag);
     std::vector<double> prescribed = grains_.hostReal(fPrescribedVelocity);
-    for (int index : indices)
+    for (int index : all)
     {
-        if (index < 0 || index >= n)
+        if (index < 0 || index >= total)
             throw Error("setGrainFlags: grain index " + std::to_string(index) +
-                        " out of range [0, " + std::to_string(n) + ")");
-        const int i = internal[index];
+                        " out of range [0, " + std::to_string(total) + ")");
+        const auto found = internal.find(index);
+        if (found == internal.end())
+            continue; // another rank's grain, not near this one
+        const int i = found->second;
+        if (halo_ && flags[i] == kFlagGhost)
+            continue;
         flags[i] = int(flag);
         prescribed[i] = vx;
         prescribed[n + i] = vy;

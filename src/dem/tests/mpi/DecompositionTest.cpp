@@ -15,6 +15,8 @@
 //   - The fluid coupling: the deposit and the grains' reaction summed over the ranks equal the
 //     one-process ones within the rounding of their sums; under a fluid force and drag the bed
 //     follows the one-process run within the growth of round-off.
+//   - Grain flags set by each rank for its own block (fixed base, driven top): the sheared bed
+//     and the driving force follow one process within the growth of round-off.
 //   - Misuse is refused with messages that name the entry: rank counts, calls not available
 //     yet (addBonds), a decomposed state imported on one process.
 // (The benchmark packing on 1 and 2 ranks: tests/mpi/test_dem_mpi.py, through demBench.)
@@ -510,6 +512,83 @@ TEST_P(Decomposition, FluidCouplingFollowsOneProcess)
                     "%.3g m\n",
                     grains.size(), worstCell, worstReaction, depositedVolume, solidVolume, steps,
                     pushed, push, largest, bound);
+}
+
+// Grain flags over the ranks: a bed on a wall whose lowest grains are fixed and whose highest
+// are driven sideways (prescribedVelocity), the shear carried across the cut. Each rank flags
+// the grains of its own block (setGrainFlags is collective: the union applies). The split run
+// follows one process within the growth of round-off (as in the dense test), and so does the
+// force the driven grains need (summed over the ranks).
+TEST_P(Decomposition, GrainFlagsFollowOneProcess)
+{
+    const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
+    const int steps = 1500;
+    dem::Parameters p = shearParameters(GetParam(), packing.length, 2e-3);
+    p.gravity = {0.0, 0.0, -9.81};
+    auto run = [&](const std::vector<dem::GrainInit>& start, bool split, double& drivingForce)
+    {
+        dem::Parameters q = p;
+        if (split)
+            q.decomposition.ranks = {2, 1};
+        dem::System s(q);
+        const std::size_t n = start.size();
+        const std::size_t first = split ? n * std::size_t(mpi->rank()) / 2 : 0,
+                          last = split ? n * std::size_t(mpi->rank() + 1) / 2 : n;
+        s.addGrains(split ? blockOf(start) : start);
+        s.addWall(dem::WallSpec{});
+        std::vector<int> base, lid;
+        for (std::size_t i = first; i < last; ++i)
+            if (start[i].position[2] < 0.015)
+                base.push_back(int(i));
+            else if (start[i].position[2] > 0.085)
+                lid.push_back(int(i));
+        s.setGrainFlags(base, dem::GrainFlag::fixed);
+        s.setGrainFlags(lid, dem::GrainFlag::prescribedVelocity, 0.5, 0.0);
+        s.step(steps);
+        drivingForce = s.prescribedGrainForceX();
+        return s.grains();
+    };
+    const double xMax = packing.length;
+    const double eta0 = steps * 4.0 * (std::nextafter(xMax, 2.0 * xMax) - xMax);
+    std::vector<dem::GrainInit> perturbed = packing.grains;
+    std::mt19937 random(13);
+    std::normal_distribution<double> normal;
+    for (dem::GrainInit& g : perturbed)
+    {
+        Vec3 e{normal(random), normal(random), normal(random)};
+        const double length = norm(e);
+        for (int d = 0; d < 3; ++d)
+            g.position[d] += eta0 * e[d] / length;
+    }
+    double force = 0.0, movedForce = 0.0, splitForce = 0.0;
+    const dem::GrainData one = run(packing.grains, false, force),
+                         moved = run(perturbed, false, movedForce),
+                         split = run(packing.grains, true, splitForce);
+    double bound = 0.0, largest = 0.0, baseMoved = 0.0, lidShift = 0.0;
+    for (std::size_t i = 0; i < one.mass.size(); ++i)
+        bound = std::max(bound, norm(sub(at(moved.position, i), at(one.position, i))));
+    for (std::size_t k = 0; k < split.id.size(); ++k)
+    {
+        const std::size_t i = std::size_t(split.id[k]);
+        largest = std::max(largest, norm(sub(at(split.position, k), at(one.position, i))));
+        if (packing.grains[i].position[2] < 0.015)
+            baseMoved = std::max(baseMoved, norm(at(split.displacement, k)));
+        else if (packing.grains[i].position[2] > 0.085)
+            lidShift =
+                std::max(lidShift, std::fabs(split.displacement[3 * k] - 0.5 * steps * p.timeStep));
+    }
+    largest = mpi->max(largest);
+    baseMoved = mpi->max(baseMoved);
+    lidShift = mpi->max(lidShift);
+    EXPECT_LE(largest, bound);
+    EXPECT_EQ(baseMoved, 0.0) << "fixed grains must not move";
+    EXPECT_LE(lidShift, 1e-12) << "driven grains move at their prescribed velocity";
+    EXPECT_NE(force, 0.0);
+    EXPECT_LE(std::fabs(splitForce - force), std::fabs(movedForce - force));
+    if (mpi->rank() == 0)
+        std::printf("  flags: split vs one process %.3g m (bound %.3g m); driving force %.12g / "
+                    "%.12g N (perturbed %.12g N)\n",
+                    largest, bound, splitForce, force, movedForce);
 }
 
 TEST_P(Decomposition, MisuseIsRefusedWithAClearMessage)
