@@ -66,6 +66,25 @@ def copy_tutorial(tutorial, name):
     return path
 
 
+# DARCYDEM_RANKS=N (N > 1) runs every solver of a Case over N MPI ranks, as an
+# OpenFOAM user would: decomposePar before its first run (system/decomposeParDict
+# made when the case has none: method simple, n (N 1 1)), mpirun -np N <solver>
+# -parallel, then reconstructPar, so that the studies read the case directory as
+# after a serial run. A stage started from another stage's demState takes each
+# rank's part from that stage's processor directories.
+RANKS_VARIABLE = "DARCYDEM_RANKS"
+SOLVERS = ("darcyDemFoam", "demFoam", "nsDemFoam")
+MPI_ENVIRONMENT = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
+
+
+def ranks_override():
+    """The MPI rank count named by DARCYDEM_RANKS (1 when unset)."""
+    value = os.environ.get(RANKS_VARIABLE, "").strip() or "1"
+    if not value.isdigit() or int(value) < 1:
+        raise ValueError(f"{RANKS_VARIABLE}={value!r} is not a rank count (1, 2, ...)")
+    return int(value)
+
+
 class RunError(RuntimeError):
     """An application exited non-zero; carries the tail of its log."""
 
@@ -86,12 +105,16 @@ class Case:
         shutil.copytree(os.path.join(template_root, template), self.path,
                         ignore=shutil.ignore_patterns("stages", "*.png", "log.*"))
         apply_backend(self.path)
+        self.ranks = ranks_override()
+        self.state_source = None  # decomposed: the demState this case starts from
 
     @classmethod
     def existing(cls, path):
         """A Case for a directory that is already there."""
         case = cls.__new__(cls)
         case.path = os.path.abspath(path)
+        case.ranks = ranks_override()
+        case.state_source = None
         return case
 
     def file(self, rel):
@@ -120,11 +143,25 @@ class Case:
             check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
     def run(self, app, *args, expect_fail=False):
-        """Run an application in the case; return its log text."""
+        """Run an application in the case; return its log text. A solver of a
+        case with ranks > 1 runs decomposed (see DARCYDEM_RANKS)."""
+        parallel = app in SOLVERS and self.ranks > 1
+        if parallel and not os.path.isdir(self.file("processor0")):
+            self.decompose()
+        command = [app, "-case", self.path, *args]
+        env = None
+        if parallel:
+            mpirun = shutil.which("mpirun")
+            if mpirun is None:
+                raise RunError(f"{RANKS_VARIABLE}={self.ranks}: mpirun not found "
+                               "(install openmpi-bin)")
+            command = [mpirun, "-np", str(self.ranks), "--oversubscribe", *command, "-parallel"]
+            env = dict(os.environ, **MPI_ENVIRONMENT)
+            # the cores shared among the ranks, unless set
+            env.setdefault("OMP_NUM_THREADS", str(max(1, (os.cpu_count() or 1) // self.ranks)))
         log = self.file("log." + app)
         with open(log, "w") as out:
-            rc = subprocess.call([app, "-case", self.path, *args],
-                                 stdout=out, stderr=subprocess.STDOUT)
+            rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT, env=env)
         text = open(log).read()
         if expect_fail:
             if rc == 0:
@@ -132,13 +169,40 @@ class Case:
             return text
         if rc != 0:
             raise RunError(f"{app} failed (exit {rc}) in {self.path}:\n" + text[-3000:])
+        if parallel:
+            self.run("reconstructPar")
         return text
+
+    def decompose(self):
+        """decomposePar (a decomposeParDict made if there is none), then each
+        rank's part of the demState this case starts from."""
+        dict_path = self.file("system/decomposeParDict")
+        if not os.path.exists(dict_path):
+            with open(dict_path, "w") as out:
+                out.write("FoamFile { version 2.0; format ascii; class dictionary; "
+                          "object decomposeParDict; }\n"
+                          f"numberOfSubdomains {self.ranks};\nmethod simple;\n"
+                          f"coeffs {{ n ({self.ranks} 1 1); }}\n")
+        self.run("decomposePar", "-force")
+        if self.state_source:
+            time_dir = os.path.dirname(self.state_source)
+            source_case, time_name = os.path.dirname(time_dir), os.path.basename(time_dir)
+            for rank in range(self.ranks):
+                part = os.path.join(source_case, f"processor{rank}", time_name, "demState")
+                if not os.path.exists(part):
+                    raise RunError(f"{self.state_source}: no part {part} for rank {rank} "
+                                   f"(the stage it comes from ran on another rank count?)")
+                # (a case without fields has no processor<N>/0 yet)
+                os.makedirs(self.file(f"processor{rank}/0"), exist_ok=True)
+                shutil.copy(part, self.file(f"processor{rank}/0/demState"))
 
     def mesh(self, state_from=None):
         """blockMesh; then, if given, a demState from another run into 0/ (the
         grains start from that prepared packing with this case's settings)."""
         self.run("blockMesh")
-        if state_from is not None:
+        if state_from is not None and self.ranks > 1:
+            self.state_source = state_from  # each rank's part, at decomposePar
+        elif state_from is not None:
             shutil.copy(state_from, self.file("0/demState"))
         return self
 

@@ -304,7 +304,9 @@ class ShearStudy:
         """The summary of a finished dry stage sheared from this packing, or None."""
         v = self.shear_velocity()
         c = self.finished("dry", self.s["strain"] * (self.height + self.d) / v)
-        if c is None or not filecmp.cmp(c.file("0/demState"), self.prepared, shallow=False):
+        # (a decomposed stage keeps its start state per rank: not reused)
+        if c is None or not os.path.exists(c.file("0/demState")) or not filecmp.cmp(
+                c.file("0/demState"), self.prepared, shallow=False):
             return None
         self.log(f"shearStudy: reuse the dry shear of {c.path}")
         return self.summarise(c, "dry", None, None, v)
