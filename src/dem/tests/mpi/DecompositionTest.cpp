@@ -84,6 +84,26 @@ double sumOwned(const dem::GrainData& g, F f)
     return mpi->sum(s);
 }
 
+//- The grains moved by eta0 = steps x 4 ulp of the box length, each in a random direction: the
+//- start of the one-process run whose distance from the reference bounds the growth of
+//- round-off (the sum of every step's possible difference, BackendComparisonTest).
+std::vector<dem::GrainInit> perturbedForSteps(const std::vector<dem::GrainInit>& grains,
+                                              double boxLength, int steps, unsigned seed)
+{
+    const double eta0 = steps * 4.0 * (std::nextafter(boxLength, 2.0 * boxLength) - boxLength);
+    std::vector<dem::GrainInit> perturbed = grains;
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    for (dem::GrainInit& g : perturbed)
+    {
+        Vec3 e{normal(random), normal(random), normal(random)};
+        const double length = norm(e);
+        for (int d = 0; d < 3; ++d)
+            g.position[d] += eta0 * e[d] / length;
+    }
+    return perturbed;
+}
+
 class Decomposition : public BackendTest
 {
 };
@@ -220,16 +240,8 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
         };
         const double xMax = packing.length;
         const double eta0 = steps * 4.0 * (std::nextafter(xMax, 2.0 * xMax) - xMax);
-        std::vector<dem::GrainInit> perturbed = grains;
-        std::mt19937 random(7);
-        std::normal_distribution<double> normal;
-        for (dem::GrainInit& g : perturbed)
-        {
-            Vec3 e{normal(random), normal(random), normal(random)};
-            const double length = norm(e);
-            for (int d = 0; d < 3; ++d)
-                g.position[d] += eta0 * e[d] / length;
-        }
+        const std::vector<dem::GrainInit> perturbed =
+            perturbedForSteps(grains, packing.length, steps, 7);
         double wallForce = 0.0, contacts = 0.0, splitWallForce = 0.0, splitContacts = 0.0, unused;
         double lidReference = 0.0, lidMoved = 0.0, lidSplit = 0.0;
         const dem::GrainData reference = run(grains, false, wallForce, contacts, lidReference),
@@ -449,18 +461,8 @@ TEST_P(Decomposition, FluidCouplingFollowsOneProcess)
         r.end = s.grains();
         return r;
     };
-    const double xMax = packing.length;
-    const double eta0 = steps * 4.0 * (std::nextafter(xMax, 2.0 * xMax) - xMax);
-    std::vector<dem::GrainInit> perturbed = grains;
-    std::mt19937 random(11);
-    std::normal_distribution<double> normal;
-    for (dem::GrainInit& g : perturbed)
-    {
-        Vec3 e{normal(random), normal(random), normal(random)};
-        const double length = norm(e);
-        for (int d = 0; d < 3; ++d)
-            g.position[d] += eta0 * e[d] / length;
-    }
+    const std::vector<dem::GrainInit> perturbed =
+        perturbedForSteps(grains, packing.length, steps, 11);
     const Result one = run(grains, false), moved = run(perturbed, false), split = run(grains, true);
 
     const double rounding = 2.0 * double(grains.size() - 1) * eps;
@@ -548,18 +550,8 @@ TEST_P(Decomposition, GrainFlagsFollowOneProcess)
         drivingForce = s.prescribedGrainForceX();
         return s.grains();
     };
-    const double xMax = packing.length;
-    const double eta0 = steps * 4.0 * (std::nextafter(xMax, 2.0 * xMax) - xMax);
-    std::vector<dem::GrainInit> perturbed = packing.grains;
-    std::mt19937 random(13);
-    std::normal_distribution<double> normal;
-    for (dem::GrainInit& g : perturbed)
-    {
-        Vec3 e{normal(random), normal(random), normal(random)};
-        const double length = norm(e);
-        for (int d = 0; d < 3; ++d)
-            g.position[d] += eta0 * e[d] / length;
-    }
+    const std::vector<dem::GrainInit> perturbed =
+        perturbedForSteps(packing.grains, packing.length, steps, 13);
     double force = 0.0, movedForce = 0.0, splitForce = 0.0;
     const dem::GrainData one = run(packing.grains, false, force),
                          moved = run(perturbed, false, movedForce),
