@@ -35,6 +35,7 @@ file (a serial packing starts a parallel run).
 """
 import math
 import os
+import re
 import shutil
 import subprocess
 
@@ -144,6 +145,12 @@ def runs():
 def test_split_run_follows_one_process_within_round_off_growth(runs):
     serial, perturbed, split, log, eta0 = runs
     assert "Grains split over 2 ranks as the mesh: 2 x 1 boxes of 1 x 2 x 10 cells" in log
+    # the load balance at each write: 256 grains over the two ranks
+    per_rank = re.findall(r"Grains per rank: (\d+) to (\d+) \(the most over the mean: (\S+)\)",
+                          log)
+    assert per_rank, log[-2000:]
+    fewest, most, ratio = per_rank[-1]
+    assert int(fewest) <= 128 <= int(most) and float(ratio) == pytest.approx(int(most) / 128)
     t = serial.times()[-1][1]
     assert split.times()[-1][1] == t
     g_one, g_pert, g_split = (read_grains(c, t) for c in (serial, perturbed, split))

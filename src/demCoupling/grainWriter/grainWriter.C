@@ -57,6 +57,20 @@ void Foam::grainWriter::writeGrains
     // Decomposed: every grain in the case's own files, written by the master
     // (the time of the case directory itself, beside reconstructPar's
     // fields; each processor directory holds its rank's demState)
+    if (Pstream::parRun())
+    {
+        // The load balance of the grains' boxes (they do not follow the
+        // grains: a bed settling to one side loads its ranks unevenly)
+        const label n = ownGrains.id.size();
+        const label fewest = returnReduce(n, minOp<label>());
+        const label most = returnReduce(n, maxOp<label>());
+        const label all = returnReduce(n, sumOp<label>());
+        Info<< "Grains per rank: " << fewest << " to " << most
+            << " (the most over the mean: "
+            << (all ? scalar(most)*Pstream::nProcs()/all : scalar(1)) << ")"
+            << endl;
+    }
+
     const dem::GrainData g(grainGather::toMaster(ownGrains));
     if (!Pstream::master())
     {
