@@ -264,7 +264,6 @@ void Foam::meshGrid::findRankBoxes
             why = "part " + Foam::name(me) + " is not a box of cells";
         }
     }
-    reduce(nx, maxOp<label>());
     if (returnReduce(label(why.size()), maxOp<label>()) > 0)
     {
         if (why.empty())

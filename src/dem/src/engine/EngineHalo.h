@@ -139,6 +139,17 @@ struct HostGrains
 } // namespace haloDetail
 
 template <class Exec>
+void EngineImpl<Exec>::sumOverRanks(Vec<double>& values) const
+{
+    if (!halo_)
+        return;
+    // Through host memory: the communicator takes host buffers (no CUDA-aware MPI assumed)
+    std::vector<double> host = haloDetail::toHost(values);
+    halo_->comm->sumInPlace(host.data(), long(host.size()));
+    thrust::copy(host.begin(), host.end(), values.begin());
+}
+
+template <class Exec>
 void EngineImpl<Exec>::refuseDecomposed(const char* what) const
 {
     if (halo_)

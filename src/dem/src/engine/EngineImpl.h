@@ -215,6 +215,9 @@ private:
     //- Decomposed: each value replaced by its sum over the ranks (else unchanged).
     void sumOverRanks(Vec<double>& values) const;
     int ownedCount() const { return grains_.size() - (halo_ ? halo_->ghostCount : 0); }
+    //- Decomposed: the grains' flags, for kernels that leave ghosts to their owners (else
+    //- nullptr: every grain is the rank's own).
+    const int* ghostFlagsOrNull() const { return halo_ ? self().grains_.integer(fFlag) : nullptr; }
     //- Throw for a call that a decomposed engine does not offer yet.
     void refuseDecomposed(const char* what) const;
     //- Before a rebuild: migration to the new owners and the ghost sets afresh.

@@ -430,18 +430,6 @@ GridView EngineImpl<Exec>::fluidGridView(const UniformGrid& grid, const char* ca
 }
 
 template <class Exec>
-void EngineImpl<Exec>::sumOverRanks(Vec<double>& values) const
-{
-    if (!halo_)
-        return;
-    // Through host memory: the communicator takes host buffers (no CUDA-aware MPI assumed)
-    std::vector<double> host(values.size());
-    thrust::copy(values.begin(), values.end(), host.begin());
-    halo_->comm->sumInPlace(host.data(), long(host.size()));
-    thrust::copy(host.begin(), host.end(), values.begin());
-}
-
-template <class Exec>
 void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                                double* predictedPorosity, double* meanVelocity,
                                double* solidVolume) const
@@ -450,7 +438,6 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
     // Decomposed: every rank deposits the grains it owns (not its ghosts) on the whole grid,
     // and the cells' sums are added over the ranks before they are finished
     const int n = grains_.size();
-    const int* ghostFlags = halo_ ? self().grains_.integer(fFlag) : nullptr;
     const long cells = g.cellCount();
     EngineImpl& e = self();
     Vec<double>& solid = depositSolid_;
@@ -466,12 +453,13 @@ void EngineImpl<Exec>::deposit(const UniformGrid& grid, double dtFluid, double* 
         if (withVelocity)
             thrust::fill(exec_.policy(), momentum.begin(), momentum.end(), 0.0);
         Exec::forEachScatter(
-            n,
-            DepositGrains{
-                e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity), e.grains_.real(fRadius),
-                capsules ? e.grains_.real(fCoreHalfLength) : nullptr, e.grains_.real(fOrientation),
-                g, lookAhead, thrust::raw_pointer_cast(solid.data()),
-                withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr, ghostFlags});
+            n, DepositGrains{e.grains_.vec3(fPosition), e.grains_.vec3(fVelocity),
+                             e.grains_.real(fRadius),
+                             capsules ? e.grains_.real(fCoreHalfLength) : nullptr,
+                             e.grains_.real(fOrientation), g, lookAhead,
+                             thrust::raw_pointer_cast(solid.data()),
+                             withVelocity ? thrust::raw_pointer_cast(momentum.data()) : nullptr,
+                             ghostFlagsOrNull()});
         sumOverRanks(solid);
         if (withVelocity)
             sumOverRanks(momentum);
@@ -578,7 +566,7 @@ void EngineImpl<Exec>::depositFluidReaction(const UniformGrid& grid, double* rea
         Exec::forEachScatter(grains_.size(),
                              DepositFluidReaction{grainFluidForce(), g,
                                                   thrust::raw_pointer_cast(out.data()),
-                                                  halo_ ? self().grains_.integer(fFlag) : nullptr});
+                                                  ghostFlagsOrNull()});
     sumOverRanks(out);
     thrust::copy(out.begin(), out.end(), reaction);
 }

@@ -104,6 +104,34 @@ std::vector<dem::GrainInit> perturbedForSteps(const std::vector<dem::GrainInit>&
     return perturbed;
 }
 
+//- p, split into 2 x 1 boxes when `split` (else on one process).
+dem::Parameters splitIf(dem::Parameters p, bool split)
+{
+    if (split)
+        p.decomposition.ranks = {2, 1};
+    return p;
+}
+
+//- The largest distance between the grains of two one-process runs (same order).
+double largestDistance(const dem::GrainData& a, const dem::GrainData& reference)
+{
+    double largest = 0.0;
+    for (std::size_t i = 0; i < reference.mass.size(); ++i)
+        largest = std::max(largest, norm(sub(at(a.position, i), at(reference.position, i))));
+    return largest;
+}
+
+//- The largest distance, over all ranks, between a split run's grains and the same grains
+//- (by id) of a one-process run.
+double largestSplitDistance(const dem::GrainData& split, const dem::GrainData& reference)
+{
+    double largest = 0.0;
+    for (std::size_t k = 0; k < split.id.size(); ++k)
+        largest = std::max(largest, norm(sub(at(split.position, k),
+                                             at(reference.position, std::size_t(split.id[k])))));
+    return mpi->max(largest);
+}
+
 class Decomposition : public BackendTest
 {
 };
@@ -225,10 +253,7 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
         auto run = [&](const std::vector<dem::GrainInit>& start, bool split, double& wallForce,
                        double& contacts, double& lidPosition)
         {
-            dem::Parameters q = p;
-            if (split)
-                q.decomposition.ranks = {2, 1};
-            dem::System s(q);
+            dem::System s(splitIf(p, split));
             s.addGrains(split ? blockOf(start) : start);
             s.addWall(dem::WallSpec{});
             s.addWall(lid);
@@ -250,13 +275,8 @@ TEST_P(Decomposition, DensePackingFollowsOneProcessWithinRoundOffGrowth)
         double bound = std::fabs(lidMoved - lidReference),
                largest = std::fabs(lidSplit - lidReference);
         EXPECT_EQ(mpi->max(lidSplit), mpi->min(lidSplit)) << "the lid must be one on all ranks";
-        for (std::size_t i = 0; i < reference.mass.size(); ++i)
-            bound = std::max(bound, norm(sub(at(moved.position, i), at(reference.position, i))));
-        for (std::size_t k = 0; k < split.id.size(); ++k)
-            largest = std::max(
-                largest,
-                norm(sub(at(split.position, k), at(reference.position, std::size_t(split.id[k])))));
-        largest = mpi->max(largest);
+        bound = std::max(bound, largestDistance(moved, reference));
+        largest = std::max(largest, largestSplitDistance(split, reference));
         const double owned = double(split.id.size());
         EXPECT_LE(largest, bound) << (oneSided ? "one-sided" : "whole bed");
         EXPECT_EQ(mpi->sum(owned), double(grains.size()));
@@ -318,10 +338,7 @@ TEST_P(Decomposition, BondedCapsulesAcrossTheBoundaryFollowOneProcess)
     p.bonds.shearStrength = 1e8;
     auto run = [&](bool split, dem::BondCounts& counts, std::size_t& rebuilds)
     {
-        dem::Parameters q = p;
-        if (split)
-            q.decomposition.ranks = {2, 1};
-        dem::System s(q);
+        dem::System s(splitIf(p, split));
         s.addGrains(split ? blockOf(grains) : grains);
         s.step(3000);
         counts = s.bondCounts();
@@ -442,10 +459,7 @@ TEST_P(Decomposition, FluidCouplingFollowsOneProcess)
     };
     auto run = [&](const std::vector<dem::GrainInit>& start, bool split)
     {
-        dem::Parameters q = p;
-        if (split)
-            q.decomposition.ranks = {2, 1};
-        dem::System s(q);
+        dem::System s(splitIf(p, split));
         s.addGrains(split ? blockOf(start) : start);
         s.addWall(dem::WallSpec{});
         s.step(0);
@@ -489,13 +503,8 @@ TEST_P(Decomposition, FluidCouplingFollowsOneProcess)
     EXPECT_NEAR(depositedVolume, solidVolume, rounding * solidVolume);
     EXPECT_EQ(split.predicted.size(), cells);
 
-    double bound = 0.0, largest = 0.0;
-    for (std::size_t i = 0; i < grains.size(); ++i)
-        bound = std::max(bound, norm(sub(at(moved.end.position, i), at(one.end.position, i))));
-    for (std::size_t k = 0; k < split.end.id.size(); ++k)
-        largest = std::max(largest, norm(sub(at(split.end.position, k),
-                                             at(one.end.position, std::size_t(split.end.id[k])))));
-    largest = mpi->max(largest);
+    const double bound = largestDistance(moved.end, one.end),
+                 largest = largestSplitDistance(split.end, one.end);
     // The fluid force acts on the split run's grains: their x momentum grows by the fluid's push,
     // t sum_g V_g f_x(x_g) = t sum_c f_x,c solid_c at the start (interpolation is the deposit's
     // transpose); the grains move 1e-4 m of 0.025 m cells, changing it by < 1 %; the bottom
@@ -529,10 +538,7 @@ TEST_P(Decomposition, GrainFlagsFollowOneProcess)
     p.gravity = {0.0, 0.0, -9.81};
     auto run = [&](const std::vector<dem::GrainInit>& start, bool split, double& drivingForce)
     {
-        dem::Parameters q = p;
-        if (split)
-            q.decomposition.ranks = {2, 1};
-        dem::System s(q);
+        dem::System s(splitIf(p, split));
         const std::size_t n = start.size();
         const std::size_t first = split ? n * std::size_t(mpi->rank()) / 2 : 0,
                           last = split ? n * std::size_t(mpi->rank() + 1) / 2 : n;
@@ -556,20 +562,17 @@ TEST_P(Decomposition, GrainFlagsFollowOneProcess)
     const dem::GrainData one = run(packing.grains, false, force),
                          moved = run(perturbed, false, movedForce),
                          split = run(packing.grains, true, splitForce);
-    double bound = 0.0, largest = 0.0, baseMoved = 0.0, lidShift = 0.0;
-    for (std::size_t i = 0; i < one.mass.size(); ++i)
-        bound = std::max(bound, norm(sub(at(moved.position, i), at(one.position, i))));
+    const double bound = largestDistance(moved, one), largest = largestSplitDistance(split, one);
+    double baseMoved = 0.0, lidShift = 0.0;
     for (std::size_t k = 0; k < split.id.size(); ++k)
     {
         const std::size_t i = std::size_t(split.id[k]);
-        largest = std::max(largest, norm(sub(at(split.position, k), at(one.position, i))));
         if (packing.grains[i].position[2] < 0.015)
             baseMoved = std::max(baseMoved, norm(at(split.displacement, k)));
         else if (packing.grains[i].position[2] > 0.085)
             lidShift =
                 std::max(lidShift, std::fabs(split.displacement[3 * k] - 0.5 * steps * p.timeStep));
     }
-    largest = mpi->max(largest);
     baseMoved = mpi->max(baseMoved);
     lidShift = mpi->max(lidShift);
     EXPECT_LE(largest, bound);
