@@ -8,6 +8,7 @@ or binary) / probes are read back as numpy arrays. Used by the tests (templates
 in tests/cases, copies in tests/run) and by the tutorials' study scripts.
 """
 
+import contextlib
 import os
 import re
 import shutil
@@ -83,6 +84,22 @@ def ranks_override():
     if not value.isdigit() or int(value) < 1:
         raise ValueError(f"{RANKS_VARIABLE}={value!r} is not a rank count (1, 2, ...)")
     return int(value)
+
+
+@contextlib.contextmanager
+def ranks_for_solvers(ranks):
+    """Within the block, every Case made runs its solvers over this many MPI
+    ranks (DARCYDEM_RANKS set, then restored): for tests that run a whole
+    study decomposed."""
+    saved = os.environ.get(RANKS_VARIABLE)
+    os.environ[RANKS_VARIABLE] = str(ranks)
+    try:
+        yield
+    finally:
+        if saved is None:
+            del os.environ[RANKS_VARIABLE]
+        else:
+            os.environ[RANKS_VARIABLE] = saved
 
 
 class RunError(RuntimeError):
@@ -195,6 +212,13 @@ class Case:
                 # (a case without fields has no processor<N>/0 yet)
                 os.makedirs(self.file(f"processor{rank}/0"), exist_ok=True)
                 shutil.copy(part, self.file(f"processor{rank}/0/demState"))
+
+    def cells_along_x(self, cells):
+        """The cell count nearest cells (at least one per rank) that the
+        case's ranks split into equal whole columns (decomposePar's simple
+        n (ranks 1 1), which the grains' boxes follow); on one process the
+        nearest whole count, so a serial study keeps its mesh."""
+        return max(1, round(cells / self.ranks)) * self.ranks
 
     def mesh(self, state_from=None):
         """blockMesh; then, if given, a demState from another run into 0/ (the

@@ -106,3 +106,24 @@ class ProgressReader:
             if ln.startswith("Progress: "):
                 self.line = ln[len("Progress: "):].strip()
         return self.line
+
+
+def parse_study_args(parser, argv):
+    """parser.parse_args(argv) with the option every study shares:
+    `-parallel [N]` (N = 2 when omitted), spelt as OpenFOAM's solvers spell
+    it, runs each solver of the study decomposed over N MPI ranks
+    (decomposePar, mpirun -np N <solver> -parallel, reconstructPar: see
+    DARCYDEM_RANKS in case.py), so that `./Allrun -parallel` of every
+    tutorial only passes its arguments on."""
+    from darcydem.case import RANKS_VARIABLE  # case.py imports nothing of ours back
+
+    parser.add_argument(
+        "-parallel", nargs="?", type=int, const=2, default=None, metavar="N",
+        help="run every solver decomposed over N MPI ranks (default N: 2): decomposePar, "
+             "mpirun -np N <solver> -parallel, reconstructPar")
+    args = parser.parse_args(argv)
+    if args.parallel is not None:
+        if args.parallel < 1:
+            parser.error(f"-parallel {args.parallel}: the rank count must be 1 or more")
+        os.environ[RANKS_VARIABLE] = str(args.parallel)
+    return args

@@ -42,7 +42,7 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                layered_consolidation, ramp_loaded_consolidation,
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, read_columns, read_entry,
                                 read_internal_field, read_probes, read_scalar_entry)
 
@@ -545,7 +545,7 @@ def main(argv):
     ap.add_argument("study_dir", metavar="STUDY_DIR",
                     help="the template case (0/, constant/, system/), e.g. "
                          "tutorials/darcyDemFoam/consolidation")
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     require_folder("consolidationStudy", a.study_dir, TEMPLATE_FILES)
     study = Study(a.study_dir)
     results = study.run()

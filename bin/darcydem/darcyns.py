@@ -29,7 +29,7 @@ import time
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 
 D = 1e-3
 SPACING = 1.0001 * D
@@ -208,7 +208,7 @@ def main(argv):
                     help="the template case, e.g. tutorials/nsDemFoam/darcyAndNavierStokes")
     ap.add_argument("--reynolds", nargs="+", type=float, default=list(REYNOLDS),
                     help="Re_p of the Darcy flux (default: %(default)s)")
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     require_folder("darcyNsStudy", a.study_dir, TEMPLATE_FILES)
     study = Study(a.study_dir, reynolds=a.reynolds)
     results = study.run()

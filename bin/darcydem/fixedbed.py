@@ -47,7 +47,7 @@ import numpy as np
 
 from darcydem import drag
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import read_vtp
 
 D = 1e-3                  # sphere diameter [m]
@@ -318,7 +318,7 @@ def main(argv):
                     help="drag laws (default: all three)")
     ap.add_argument("--reynolds", nargs="+", type=float, default=list(REYNOLDS),
                     help="Re_p = rho U_s d/mu (default: %(default)s)")
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     require_folder("fixedBedStudy", a.study_dir, TEMPLATE_FILES)
     study = Study(a.study_dir, laws=a.laws, reynolds=a.reynolds)
     results = study.run()

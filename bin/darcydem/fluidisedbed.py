@@ -33,7 +33,7 @@ import numpy as np
 
 from darcydem import drag
 from darcydem.case import Case, PROJECT
-from darcydem.cli import say
+from darcydem.cli import parse_study_args, say
 from darcydem.foamfiles import read_vtp
 
 D, RHO_P, RHO, MU, G = 1e-3, 2500.0, 1000.0, 1e-3, 9.81
@@ -144,7 +144,7 @@ def main(argv):
                     "results.json and fluidisedBed.png there, the run in stages/run")
     ap.add_argument("--velocities", type=float, nargs="+", default=list(VELOCITIES))
     ap.add_argument("--stage", type=float, default=STAGE)
-    args = ap.parse_args(argv)
+    args = parse_study_args(ap, argv)
     study_dir = os.path.abspath(args.study_dir)
     c, wall = run(study_dir, args.velocities, args.stage)
     points, volume = measure(c, args.velocities, args.stage)

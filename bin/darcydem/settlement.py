@@ -37,7 +37,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp_lines
 from darcydem.smoothing import hanning_smooth
 
@@ -249,7 +249,8 @@ class SettlementStudy:
         cell = 3e-3   # about a capsule's length
         for key, value in (("Lx", lx), ("Ly", ly), ("H", lz)):
             c.set_variable(block, key, "%.12g" % value)
-        for key, value in (("nx", lx), ("ny", ly), ("nz", lz)):
+        c.set_variable(block, "nx", c.cells_along_x(lx / cell))
+        for key, value in (("ny", ly), ("nz", lz)):
             c.set_variable(block, key, max(1, round(value / cell)))
         os.makedirs(c.file("0"), exist_ok=True)
         if self.strength_scale is not None:
@@ -777,7 +778,7 @@ def main(argv):
     ap.add_argument("--preparation-sweep", action="store_true",
                     help="only the contraction, at several contact viscosities and"
                          " strain rates: bonds frozen and broken (settlementPreparation.png)")
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     if not a.preparation_viscosity > 0:
         sys.exit(f"settlementStudy: --preparation-viscosity {a.preparation_viscosity:g}:"
                  " the contact viscosity must be > 0 Pa s")

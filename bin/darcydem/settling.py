@@ -54,7 +54,7 @@ import numpy as np
 
 from darcydem import drag
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.fixedbed import solver_version
 from darcydem.foamfiles import read_grains
 
@@ -283,7 +283,7 @@ def main(argv):
                          % H_OVER_D)
     ap.add_argument("--sizes", nargs="+", type=float, default=list(SIZES),
                     help="h/d of the series at Re %g (default: %%(default)s)" % SIZE_RE)
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     require_folder("settlingSphereStudy", a.study_dir, TEMPLATE_FILES)
     study = Study(a.study_dir, reynolds=a.reynolds, sizes=a.sizes)
     results = study.run()

@@ -50,7 +50,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case
-from darcydem.cli import StageClock, require_folder, say
+from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, grain_files, read_columns, read_scalar_entry,
                                 read_vtp, time_dirs)
 from darcydem.smoothing import hanning_smooth
@@ -637,7 +637,7 @@ def main(argv):
                     help="take the packing and the dry shear from finished stages of an "
                     "earlier run of the same size (e.g. the default model's) instead of "
                     "running them again")
-    a = ap.parse_args(argv)
+    a = parse_study_args(ap, argv)
     require_folder("shearStudy", a.study_dir, TEMPLATE_FILES)
     study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series,
                        fluid_force=a.fluid_force, reuse=a.reuse_packing)

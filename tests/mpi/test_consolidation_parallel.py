@@ -21,7 +21,7 @@ import sys
 
 import pytest
 
-from darcydem.case import RANKS_VARIABLE, copy_tutorial
+from darcydem.case import copy_tutorial, ranks_for_solvers
 from darcydem.consolidation import Study
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "coupled"))
@@ -39,17 +39,10 @@ pytestmark = pytest.mark.skipif(
 @pytest.fixture(scope="module")
 def study():
     path = copy_tutorial("consolidation", "consolidation_parallel")
-    saved = os.environ.get(RANKS_VARIABLE)
-    os.environ[RANKS_VARIABLE] = "2"
-    try:
+    with ranks_for_solvers(2):
         s = Study(path)
         s.run()
         s.plot()
-    finally:
-        if saved is None:
-            del os.environ[RANKS_VARIABLE]
-        else:
-            os.environ[RANKS_VARIABLE] = saved
     log = open(os.path.join(path, "stages", "consolidation", "log.darcyDemFoam")).read()
     assert "Grains split over 2 ranks as the mesh: 2 x 1 boxes" in log
     assert os.path.isfile(os.path.join(path, "stages", "consolidation", "processor1", "0",

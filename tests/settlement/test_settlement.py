@@ -22,7 +22,12 @@ TUTORIAL = os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement")
 
 @pytest.fixture(scope="module")
 def study():
-    path = os.path.join(TEST_RUNS, "snow_settlement")
+    return run_study("snow_settlement")
+
+
+def run_study(name):
+    """The study at size 'test' in tests/run/name: (study, runs)."""
+    path = os.path.join(TEST_RUNS, name)
     shutil.rmtree(path, ignore_errors=True)
     shutil.copytree(TUTORIAL, path, ignore=shutil.ignore_patterns(
         "stages", "*.png", "results.json", "log.*"))

@@ -55,15 +55,6 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             // Decomposed: the grains' boxes are the mesh's parts (meshGrid)
             dem::Parameters p(settings_.parameters(mesh.time().value()));
             p.decomposition.ranks = grid_.rankBoxes();
-            if (Pstream::parRun() && p.bonds.enabled)
-            {
-                FatalIOErrorInFunction(settings_.dict())
-                    << "Bonds ('bonds' in " << settings_.dict().name()
-                    << ") are not available with -parallel yet: their"
-                    << " files are not gathered over the ranks. Run the"
-                    << " case on one process (threads or a GPU)" << nl
-                    << exit(FatalIOError);
-            }
             system_.reset(new dem::System(p));
             settings_.walls().addTo(*system_);
             const demStart start(mesh.time(), settings_, grid_.grid(), *system_);

@@ -12,14 +12,17 @@
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace Foam
+{
 namespace
 {
 
 //- The per-grain fields of a GrainData with their widths, in one order for
-//- packing and unpacking
+//- packing and unpacking; the id first: the sort key
 template<class Visit>
 void forEachField(dem::GrainData& g, Visit&& visit)
 {
+    visit(g.id, 1);
     visit(g.position, 3);
     visit(g.displacement, 3);
     visit(g.velocity, 3);
@@ -34,41 +37,56 @@ void forEachField(dem::GrainData& g, Visit&& visit)
     visit(g.mass, 1);
     visit(g.contactCount, 1);
     visit(g.flag, 1);
-    visit(g.id, 1);
 }
 
-} // End anonymous namespace
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-dem::GrainData Foam::grainGather::toMaster(const dem::GrainData& g)
+//- The per-bond fields of a BondData, the grains' ids first: the sort key
+template<class Visit>
+void forEachField(dem::BondData& b, Visit&& visit)
 {
-    if (!Pstream::parRun())
-    {
-        return g;
-    }
+    visit(b.first, 1);
+    visit(b.second, 1);
+    visit(b.patchRadius, 1);
+    visit(b.normalForce, 1);
+    visit(b.shearForce, 3);
+    visit(b.twistMoment, 1);
+    visit(b.bendMoment, 3);
+    visit(b.normal, 3);
+    visit(b.point, 3);
+    visit(b.age, 1);
+    visit(b.softening, 1);
+    visit(b.creepNormal, 1);
+    visit(b.creepShear, 1);
+    visit(b.creepTwist, 1);
+    visit(b.creepBend, 1);
+}
 
-    // One record of doubles per grain (ints and flags are exact in doubles)
-    dem::GrainData local(g);
-    const size_t n = local.id.size();
+
+//- Collective: every rank's records (count of them each, one row of doubles
+//- per record: ints, flags and ids are exact in doubles) joined on the
+//- master and sorted by their first keys columns; empty on the other ranks
+template<class Data>
+Data gatherSorted(const Data& data, const size_t count, const int keys)
+{
+    Data local(data);
     label width = 0;
     forEachField(local, [&](auto&, int w) { width += w; });
 
     List<scalarList> records(Pstream::nProcs());
     scalarList& mine = records[Pstream::myProcNo()];
-    mine.setSize(label(n)*width);
+    mine.setSize(label(count)*width);
     label offset = 0;
     forEachField
     (
         local,
         [&](auto& field, int w)
         {
-            for (size_t i = 0; i < n; ++i)
+            for (size_t i = 0; i < count; ++i)
             {
                 for (int c = 0; c < w; ++c)
                 {
-                    mine[label(i)*width + offset + c] = scalar(field[w*i + c]);
+                    mine[label(i)*width + offset + c] =
+                        scalar(field[w*i + c]);
                 }
             }
             offset += w;
@@ -76,30 +94,31 @@ dem::GrainData Foam::grainGather::toMaster(const dem::GrainData& g)
     );
     Pstream::gatherList(records);
 
-    dem::GrainData all;
+    Data all;
     if (!Pstream::master())
     {
         return all;
     }
 
-    // Every grain's record, then the order of their ids
     scalarList joined;
     for (const scalarList& r : records)
     {
         joined.append(r);
     }
     const size_t total = joined.size()/width;
-    std::vector<double> id(total);
-    for (size_t i = 0; i < total; ++i)
-    {
-        id[i] = joined[label(i)*width + width - 1];
-    }
     std::vector<size_t> order(total);
     std::iota(order.begin(), order.end(), size_t(0));
     std::sort
     (
         order.begin(), order.end(),
-        [&](size_t a, size_t b) { return id[a] < id[b]; }
+        [&](size_t a, size_t b)
+        {
+            return std::lexicographical_compare
+            (
+                &joined[label(a)*width], &joined[label(a)*width] + keys,
+                &joined[label(b)*width], &joined[label(b)*width] + keys
+            );
+        }
     );
 
     offset = 0;
@@ -122,6 +141,31 @@ dem::GrainData Foam::grainGather::toMaster(const dem::GrainData& g)
         }
     );
     return all;
+}
+
+} // End anonymous namespace
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+dem::GrainData Foam::grainGather::toMaster(const dem::GrainData& g)
+{
+    if (!Pstream::parRun())
+    {
+        return g;
+    }
+    return gatherSorted(g, g.id.size(), 1);
+}
+
+
+dem::BondData Foam::grainGather::toMaster(const dem::BondData& b)
+{
+    if (!Pstream::parRun())
+    {
+        return b;
+    }
+    return gatherSorted(b, b.first.size(), 2);
 }
 
 

@@ -72,6 +72,16 @@ void Foam::grainWriter::writeGrains
     }
 
     const dem::GrainData g(grainGather::toMaster(ownGrains));
+    // (collective: the bonds are read on every rank, written by the master)
+    const dem::BondData bonds
+    (
+        settings_.bonds().writeVtk()
+      ? grainGather::toMaster
+        (
+            demLibraryCall("reading the bonds", [&]{ return system.bonds(); })
+        )
+      : dem::BondData()
+    );
     if (!Pstream::master())
     {
         return;
@@ -123,7 +133,7 @@ void Foam::grainWriter::writeGrains
         bondVtkWriter::writeVtp
         (
             bondsVtp,
-            demLibraryCall("reading the bonds", [&]{ return system.bonds(); }),
+            bonds,
             g,
             system.parameters(),
             settings_.asciiOutput()

@@ -121,9 +121,12 @@ Foam::label Foam::latestCompleteTime::setAside(const argList& args)
 
     // Decomposed: the latest time complete on every rank; later times
     // (complete on some ranks only) are set aside everywhere, with the
-    // grains the master wrote into the case directory for them
-    scalar latest = moved < times.size()
-        ? times[times.size() - 1 - moved].value() : -GREAT;
+    // grains the master wrote into the case directory for them. A directory
+    // without any time (decomposePar of a case without fields: demFoam's
+    // grains are in the case directory's start time) sets no bound.
+    scalar latest = times.empty() ? GREAT
+      : moved < times.size() ? times[times.size() - 1 - moved].value()
+      : -GREAT;
     if (Pstream::parRun())
     {
         latest = returnReduce(latest, minOp<scalar>());
