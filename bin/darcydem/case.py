@@ -195,11 +195,12 @@ class Case:
         rank's part of the demState this case starts from."""
         dict_path = self.file("system/decomposeParDict")
         if not os.path.exists(dict_path):
+            nx, ny = self.column_split()
             with open(dict_path, "w") as out:
                 out.write("FoamFile { version 2.0; format ascii; class dictionary; "
                           "object decomposeParDict; }\n"
                           f"numberOfSubdomains {self.ranks};\nmethod simple;\n"
-                          f"coeffs {{ n ({self.ranks} 1 1); }}\n")
+                          f"coeffs {{ n ({nx} {ny} 1); }}\n")
         self.run("decomposePar", "-force")
         if self.state_source:
             time_dir = os.path.dirname(self.state_source)
@@ -212,6 +213,23 @@ class Case:
                 # (a case without fields has no processor<N>/0 yet)
                 os.makedirs(self.file(f"processor{rank}/0"), exist_ok=True)
                 shutil.copy(part, self.file(f"processor{rank}/0/demState"))
+
+    def column_split(self):
+        """(NX, NY), NX NY = ranks, that cut the mesh into equal whole columns
+        (NX dividing its cell count in x, NY in y; the grains' boxes follow
+        the parts), cut along x where it can: for a single-block
+        blockMeshDict; (ranks, 1) when none fits or the mesh is not one
+        block (the solver then names the parts that do not fit)."""
+        text = subprocess.run([*FOAM_DICTIONARY, "-expand", self.file("system/blockMeshDict")],
+                              capture_output=True, text=True).stdout
+        blocks = re.findall(r"hex\s*\([^)]*\)\s*\(\s*(\d+)\s+(\d+)\s+\d+\s*\)", text)
+        if len(blocks) == 1:
+            cells_x, cells_y = (int(c) for c in blocks[0])
+            for nx in range(self.ranks, 0, -1):
+                ny = self.ranks // nx
+                if nx * ny == self.ranks and cells_x % nx == 0 and cells_y % ny == 0:
+                    return nx, ny
+        return self.ranks, 1
 
     def cells_along_x(self, cells):
         """The cell count nearest cells (at least one per rank) that the

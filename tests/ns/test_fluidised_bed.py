@@ -128,8 +128,8 @@ def interior(r):
     return grad, r["eps"][k[0]:k[-1] + 1].mean(), k
 
 
-def run_bed():
-    c = Case("fluidisedBed", "fluidisedBed")
+def run_bed(name="fluidisedBed"):
+    c = Case("fluidisedBed", name)
     subprocess.run([f"{PROJECT}/bin/makeGrains", "--box", str(L), str(L),
                     "--z", str(Z_WALL + D / 2), "0.085", "--radius", str(D / 2),
                     "--count", str(N_GRAINS), "--layout", "random", "--periodic", "xy",
