@@ -292,6 +292,22 @@ Foam::demStart::demStart
     }
     else
     {
+        // A time a solver wrote (uniform/time is there) but without the
+        // state beside its grains: a time reconstructed by reconstructPar
+        // (each rank's demState stays in its processor directory), or one
+        // whose demState was removed
+        if (isFile(caseTimePath()/"uniform"/"time"))
+        {
+            WarningInFunction
+                << "No demState at time " << runTime.timeName() << ": the"
+                << " grains start from " << caseTimePath()/"grains"
+                << " without their contacts' history (tangential springs,"
+                << " neighbour lists), with the walls where "
+                << settings_.dict().name() << " puts them and displacements"
+                << " measured from this time. A decomposed run continues"
+                << " exactly from its processor directories' demState"
+                << " files." << endl;
+        }
         addGrainsFromFile(system);
         if (settings_.walls().top() >= 0)
         {

@@ -173,7 +173,9 @@ void Foam::grainsFile::write(const dem::GrainData& g) const
         os  << "# darcyDem grains, one per line: a sphere 'x y z r' [m], a"
             << " capsule 'x y z r h qw qx qy qz' (h: core half-length [m],"
             << " q: orientation, body z axis = capsule axis); written at a"
-            << " write time, demState beside it holds the complete state\n";
+            << " write time, the demState of that time holds the complete"
+            << " state (beside it, or each rank's part in"
+            << " processor<N>/<time> of a decomposed run)\n";
         for (size_t i = 0; i < g.radius.size(); ++i)
         {
             os  << g.position[3*i] << ' ' << g.position[3*i + 1] << ' '
