@@ -239,3 +239,46 @@ def capsule_axes(q):
     """Unit capsule axes R(q) e_z of quaternions q (n, 4), (w, x, y, z)."""
     w, x, y, z = np.asarray(q, dtype=float).T
     return np.stack([2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)], axis=1)
+
+
+DEM_STATE_MAGIC = b"darcyDem-state 1\n"
+
+
+def read_dem_state(path):
+    """A <time>/demState (doc/CASE-FORMAT.md: the magic line, then the
+    named real arrays and the named 64-bit integer arrays, each a uint64
+    count of arrays and per array a uint64 name length, the name, a uint64
+    length and the values, little-endian): ({name: float64 array},
+    {name: int64 array})."""
+    data = open(path, "rb").read()
+    if not data.startswith(DEM_STATE_MAGIC):
+        raise ValueError(f"{path} is not a demState file")
+    at = len(DEM_STATE_MAGIC)
+    groups = []
+    for dtype in ("<f8", "<i8"):
+        arrays = {}
+        count = int(np.frombuffer(data, "<u8", 1, at)[0])
+        at += 8
+        for _ in range(count):
+            length = int(np.frombuffer(data, "<u8", 1, at)[0])
+            name = data[at + 8:at + 8 + length].decode()
+            at += 8 + length
+            size = int(np.frombuffer(data, "<u8", 1, at)[0])
+            arrays[name] = np.frombuffer(data, dtype, size, at + 8).copy()
+            at += 8 + 8 * size
+        groups.append(arrays)
+    if at != len(data):
+        raise ValueError(f"{path}: {len(data) - at} bytes after the arrays")
+    return groups[0], groups[1]
+
+
+def write_dem_state(path, reals, integers):
+    """Write what read_dem_state reads (for tests that alter a state)."""
+    with open(path, "wb") as out:
+        out.write(DEM_STATE_MAGIC)
+        for arrays, dtype in ((reals, "<f8"), (integers, "<i8")):
+            out.write(np.uint64(len(arrays)).astype("<u8").tobytes())
+            for name, values in arrays.items():
+                out.write(np.uint64(len(name)).astype("<u8").tobytes() + name.encode())
+                values = np.asarray(values, dtype=dtype)
+                out.write(np.uint64(values.size).astype("<u8").tobytes() + values.tobytes())

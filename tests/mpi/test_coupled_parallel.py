@@ -48,7 +48,7 @@ import numpy as np
 import pytest
 
 from darcydem.case import Case
-from darcydem.foamfiles import read_internal_field
+from darcydem.foamfiles import read_dem_state, read_internal_field, write_dem_state
 
 MPIRUN = shutil.which("mpirun")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -240,43 +240,139 @@ def test_restart_from_a_decomposed_time_is_exact():
         assert np.array_equal(p_a, p_b)
 
 
+def same_restart_end(reference, c, end):
+    """The grains file and every rank's p of time end, byte for byte."""
+    with open(reference.file(f"{end}/grains")) as a, open(c.file(f"{end}/grains")) as b:
+        assert a.read() == b.read()
+    for rank in (0, 1):
+        assert np.array_equal(read_internal_field(reference.file(f"processor{rank}/{end}/p")),
+                              read_internal_field(c.file(f"processor{rank}/{end}/p")))
+
+
+@pytest.fixture(scope="module")
+def written_every_20_steps():
+    """The column on two ranks to 0.006 s, written at 0.002, 0.004, 0.006."""
+    c = column("parallel_crash_reference", end=0.006, write_steps=20)
+    c.run("decomposePar")
+    run_parallel(c)
+    return c
+
+
+def test_time_complete_on_one_rank_only_is_set_aside_everywhere(written_every_20_steps):
+    """A run killed while writing 0.004 after rank 0 had finished its part
+    and rank 1 had not (made on disk: rank 1's demState half written as
+    demState.tmp, its write mark still there; 0.006 not reached): with
+    startFrom latestTime every rank restarts from 0.002, the latest time
+    complete on every rank; rank 1's 0.004, rank 0's complete one and the
+    case directory's grains of 0.004 are set aside as 0.004.incomplete;
+    the run then ends bit for bit as the uninterrupted one."""
+    reference = written_every_20_steps
+    path = reference.path.replace("crash_reference", "crash_one_rank")
+    shutil.rmtree(path, ignore_errors=True)
+    shutil.copytree(reference.path, path, ignore=shutil.ignore_patterns("log.*"))
+    c = Case.existing(path)
+    for where in ("", "processor0/", "processor1/"):
+        shutil.rmtree(c.file(where + "0.006"))
+    state = c.file("processor1/0.004/demState")
+    text = open(state, "rb").read()
+    os.remove(state)
+    with open(state + ".tmp", "wb") as out:
+        out.write(text[:len(text) // 2])
+    open(c.file("processor1/0.004/.writeInProgress"), "w").close()
+    log = run_parallel(c)
+    assert "restarting from the latest complete time 0.002" in log, log[-2000:]
+    assert "complete on every rank" in log
+    for where in ("", "processor0/", "processor1/"):
+        assert os.path.isdir(c.file(where + "0.004.incomplete")), where
+    same_restart_end(reference, c, "0.006")
+
+
+def test_killed_parallel_run_restarts_from_the_last_complete_time(written_every_20_steps):
+    """A real kill: the master SIGKILLed (the writer's test hook) in the
+    middle of its demState of 0.004 (its third demState: at each time it
+    writes its part and the gathered one), the other rank stopped by mpirun
+    once the master died, with its part of 0.004 complete or not: the
+    restart with startFrom latestTime continues from 0.002, the latest time
+    complete on every rank, and ends bit for bit as the uninterrupted
+    run."""
+    reference = written_every_20_steps
+    c = column("parallel_crash_killed", end=0.006, write_steps=20)
+    c.run("decomposePar")
+    env = dict(ENV, DARCYDEM_TEST_KILL_AT="inDemState@3")
+    result = subprocess.run([MPIRUN, "-np", "2", "--oversubscribe", "darcyDemFoam", "-case",
+                             c.path, "-parallel"], capture_output=True, text=True, env=env,
+                            timeout=600)
+    assert result.returncode != 0
+    assert "SIGKILL at inDemState (3)" in result.stdout + result.stderr
+    assert not os.path.exists(c.file("processor0/0.006"))
+    log = run_parallel(c)
+    assert "restarting from the latest complete time 0.002" in log, log[-2000:]
+    assert os.path.isdir(c.file("processor0/0.004.incomplete"))
+    same_restart_end(reference, c, "0.006")
+
+
 def test_restart_from_a_reconstructed_time():
-    """After reconstructPar the case directory's time holds the fields and
-    every grain, but no demState (each rank's part stays in its processor
-    directory). A run continues from it on one process, and decomposed
-    afresh along the other axis (n (1 2 1)): each starts from that grains
-    file, says so with the warning that the contacts' history, the walls
-    (as constant/demProperties sets them) and the displacement reference
-    start again there, writes every grain once, and
-    deposits the grains' volume to the rounding of its sums (as above). The
-    grains packed under the lid touch, so their springs restart from zero:
-    not compared with the uninterrupted run."""
+    """A decomposed run writes, besides each rank's demState, the whole
+    system as one process's state into the case directory's time (gathered
+    on the master: grains in id order, each contact's history and bond
+    once, walls, clock). After reconstructPar a run on one process
+    continues from it ('restart from', no warning) and follows the decomposed
+    run's own continuation within the growth of round-off over its 500 DEM
+    steps, bounded as above by a one-process continuation from the same
+    state with every grain moved by eta0 = 500 x 4 ulp. Decomposed afresh
+    along the other axis (n (1 2 1)) a run cannot take a one-process state:
+    it starts from the grains file with the warning that says what starts
+    again, writes every grain once and deposits their volume to the
+    rounding of its sums."""
     first = column("parallel_reconstructed", end=0.01, write_steps=50)
     first.run("decomposePar")
     run_parallel(first)
     first.run("reconstructPar")
-    assert not os.path.exists(first.file("0.01/demState"))
-    for name, cut in (("serial", None), ("recut", "1 2 1")):
+    assert os.path.isfile(first.file("0.01/demState"))
+
+    def copy(name):
         path = first.path + "_" + name
         shutil.rmtree(path, ignore_errors=True)
-        shutil.copytree(first.path, path, ignore=shutil.ignore_patterns(
-            "processor*", "postProcessing", "log.*"))
+        skip = ["postProcessing", "log.*"] + ([] if name == "decomposed" else ["processor*"])
+        shutil.copytree(first.path, path, ignore=shutil.ignore_patterns(*skip))
         c = Case.existing(path)
         c.set("system/controlDict", "endTime", 0.015)
-        if cut is None:
-            log = c.run("darcyDemFoam")
-        else:
-            with open(c.file("system/decomposeParDict"), "w") as out:
-                out.write(DECOMPOSE.format(n=cut))
-            c.run("decomposePar", "-force")
-            log = run_parallel(c)
-            assert "Grains split over 2 ranks as the mesh: 1 x 2 boxes" in log
-            c.run("reconstructPar", "-latestTime")
-        assert "No demState at time 0.01" in log and "0.01/grains" in log, log[-2000:]
-        assert "without their contacts' history" in log
-        assert read_grains(c, "0.015").shape == read_grains(first, "0").shape  # each once
-        error = diagnostics(c, start="0.01")["solidVolumeError"]
-        assert np.max(np.abs(error)) <= 2 * (256 + 40) * EPS, (name, np.max(np.abs(error)))
+        return c
+
+    decomposed, serial, perturbed, recut = (copy(n) for n in
+                                            ("decomposed", "serial", "perturbed", "recut"))
+    run_parallel(decomposed)
+    log = serial.run("darcyDemFoam")
+    assert "restart from" in log and "0.01/demState" in log, log[-2000:]
+    assert "No demState" not in log and "one-process state" not in log
+
+    reals, integers = read_dem_state(perturbed.file("0.01/demState"))
+    x = reals["grain.position"].reshape(3, -1)  # component-blocked: x of every grain, then y, z
+    steps = 500
+    eta0 = steps * 4 * math.ulp(np.max(np.abs(x)))
+    u = np.random.default_rng(5).normal(size=x.shape)
+    x += eta0 * u / np.linalg.norm(u, axis=0)
+    reals["grain.position"] = x.ravel()
+    write_dem_state(perturbed.file("0.01/demState"), reals, integers)
+    perturbed.run("darcyDemFoam")
+    g_split, g_one, g_pert = (read_grains(c, "0.015") for c in (decomposed, serial, perturbed))
+    tol = periodic_difference(g_pert, g_one)
+    dx = periodic_difference(g_one, g_split)
+    print(f"one process from the gathered state vs the decomposed run after {steps} steps:"
+          f" {dx:.3g} m (tolerance {tol:.3g} m, eta0 {eta0:.3g} m)")
+    assert 0 < tol < 1e-8
+    assert dx <= tol
+
+    with open(recut.file("system/decomposeParDict"), "w") as out:
+        out.write(DECOMPOSE.format(n="1 2 1"))
+    recut.run("decomposePar", "-force")
+    log = run_parallel(recut)
+    assert "Grains split over 2 ranks as the mesh: 1 x 2 boxes" in log
+    recut.run("reconstructPar", "-latestTime")
+    assert "is a one-process state" in log and "grains file beside it" in log, log[-2000:]
+    assert read_grains(recut, "0.015").shape == read_grains(first, "0").shape  # each once
+    error = diagnostics(recut, start="0.01")["solidVolumeError"]
+    assert np.max(np.abs(error)) <= 2 * (256 + 40) * EPS, np.max(np.abs(error))
 
 
 def test_navier_stokes_solver_on_two_ranks():

@@ -422,6 +422,11 @@ SystemState System::exportState() const
     return impl_->engine->exportState();
 }
 
+SystemState System::exportGatheredState() const
+{
+    return impl_->engine->exportGatheredState();
+}
+
 void System::importState(const SystemState& state)
 {
     impl_->engine->importState(state);

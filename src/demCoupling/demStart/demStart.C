@@ -281,9 +281,12 @@ Foam::demStart::demStart
         if (parts == 0 && isFile(caseTimePath()/"demState"))
         {
             WarningInFunction
-                << caseTimePath()/"demState" << " is a one-process state:"
-                << " a decomposed run starts from the grains file beside it,"
-                << " without the contacts' history" << endl;
+                << caseTimePath()/"demState" << " is a one-process state"
+                << " (it continues a run on one process): a decomposed run"
+                << " starts from the grains file beside it, without the"
+                << " contacts' history and the bonds, with the walls where "
+                << settings_.dict().name() << " puts them and displacements"
+                << " measured from this time" << endl;
         }
     }
     if (fromState_)
@@ -293,16 +296,20 @@ Foam::demStart::demStart
     else
     {
         // A time a solver wrote (uniform/time is there) but without the
-        // state beside its grains: a time reconstructed by reconstructPar
-        // (each rank's demState stays in its processor directory), or one
-        // whose demState was removed
-        if (isFile(caseTimePath()/"uniform"/"time"))
+        // state beside its grains (its demState removed, or a time of a
+        // decomposed run reconstructed and then decomposed afresh: each
+        // rank's demState belongs to the old decomposition)
+        if
+        (
+            isFile(caseTimePath()/"uniform"/"time")
+         && !isFile(caseTimePath()/"demState")
+        )
         {
             WarningInFunction
                 << "No demState at time " << runTime.timeName() << ": the"
                 << " grains start from " << caseTimePath()/"grains"
                 << " without their contacts' history (tangential springs,"
-                << " neighbour lists), with the walls where "
+                << " bonds), with the walls where "
                 << settings_.dict().name() << " puts them and displacements"
                 << " measured from this time. A decomposed run continues"
                 << " exactly from its processor directories' demState"

@@ -51,7 +51,11 @@ void Foam::finiteCheck::grains
         if (!finite)
         {
             FatalErrorInFunction
-                << "Grain " << label(i) << " (of " << source << ") is at ("
+                << "Grain "
+                // its id (line of the grains file), also on a rank of a
+                // decomposed run, whose grains are a part in another order
+                << label(g.id.size() == n ? size_t(g.id[i]) : i)
+                << " (of " << source << ") is at ("
                 << g.position[3*i] << " " << g.position[3*i + 1] << " "
                 << g.position[3*i + 2] << ") with velocity ("
                 << g.velocity[3*i] << " " << g.velocity[3*i + 1] << " "

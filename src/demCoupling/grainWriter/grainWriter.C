@@ -173,6 +173,29 @@ void Foam::grainWriter::writeState
     );
     demStart::addOwnEntries(state, topWall0, displacement0, grid);
     demStateFile(dir/"demState").write(state);
+
+    // Decomposed: also the whole system as one process's state in the case
+    // directory, beside the grains file (a run on one process continues
+    // from a reconstructed time; the neighbour lists are rebuilt at its
+    // first step, the contacts' histories and the bonds kept)
+    if (Pstream::parRun())
+    {
+        dem::SystemState whole
+        (
+            demLibraryCall
+            (
+                "gathering the grains' state",
+                [&]{ return system.exportGatheredState(); }
+            )
+        );
+        if (Pstream::master())
+        {
+            const fileName caseDir(runTime.globalPath()/runTime.timeName());
+            mkDir(caseDir);
+            demStart::addOwnEntries(whole, topWall0, displacement0, grid);
+            demStateFile(caseDir/"demState").write(whole);
+        }
+    }
 }
 
 

@@ -150,6 +150,12 @@ public:
     //- thread count).
     SystemState exportState() const;
     void importState(const SystemState& state);
+    //- Collective. Over MPI ranks: on rank 0 every grain of every rank as one process's state
+    //- (grains in id order, each contact's history and each bond once, walls, clock and
+    //- counters; the neighbour list is rebuilt at the next step), which a one-process System
+    //- with the same Parameters (decomposition 1 x 1) and walls imports and continues from;
+    //- an empty state on the other ranks. On one process: exportState().
+    SystemState exportGatheredState() const;
 
 private:
     struct Impl;

@@ -84,6 +84,8 @@ public:
     virtual void depositFluidReaction(const UniformGrid& grid, double* reaction) const = 0;
 
     virtual SystemState exportState() const = 0;
+    //- Collective: the whole system as one process's state on rank 0 (empty elsewhere).
+    virtual SystemState exportGatheredState() const { return exportState(); }
     virtual void importState(const SystemState& state) = 0;
 };
 

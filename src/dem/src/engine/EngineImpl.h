@@ -207,6 +207,7 @@ public:
 
     SystemState exportState() const override;
     void importState(const SystemState& state) override;
+    SystemState exportGatheredState() const override; // EngineGatheredState.h
 
 private:
     // ---- over MPI ranks (EngineHalo.h) --------------------------------------------------------
@@ -590,5 +591,6 @@ private:
 
 #include "engine/EngineIo.h"
 #include "engine/EngineHalo.h"
+#include "engine/EngineGatheredState.h"
 #include "engine/EngineNeighbours.h"
 #include "engine/EngineBonds.h"
