@@ -260,8 +260,10 @@ Foam::demStart::demStart
     topWall0_(0)
 {
     // Decomposed: each rank's part in its processor directory, on all ranks
-    // or none
-    const fileName statePath(runTime.timePath()/"demState");
+    // or none; with none, the one-process state of the case directory's
+    // time (written by a run on one process, or gathered by a decomposed
+    // one), which the library distributes over the ranks
+    fileName statePath(runTime.timePath()/"demState");
     fromState_ = isFile(statePath);
     if (Pstream::parRun())
     {
@@ -280,13 +282,10 @@ Foam::demStart::demStart
         }
         if (parts == 0 && isFile(caseTimePath()/"demState"))
         {
-            WarningInFunction
-                << caseTimePath()/"demState" << " is a one-process state"
-                << " (it continues a run on one process): a decomposed run"
-                << " starts from the grains file beside it, without the"
-                << " contacts' history and the bonds, with the walls where "
-                << settings_.dict().name() << " puts them and displacements"
-                << " measured from this time" << endl;
+            statePath = caseTimePath()/"demState";
+            fromState_ = true;
+            Info<< "    one-process state " << statePath << ": distributed"
+                << " over the ranks at the first step" << endl;
         }
     }
     if (fromState_)

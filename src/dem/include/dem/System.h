@@ -149,6 +149,11 @@ public:
     //- and stepping gives bit-identical results to the uninterrupted run (same backend and
     //- thread count).
     SystemState exportState() const;
+    //- Over MPI ranks (collective): each rank imports the part it exported, on the same
+    //- decomposition (bit for bit as above); or every rank passes the same one-process state
+    //- (exportState of a one-process System, or exportGatheredState), which rank 0 takes whole
+    //- and the first step's rebuild distributes, each grain to its owner with its contacts'
+    //- histories and bonds (as the split run would continue, to round-off).
     void importState(const SystemState& state);
     //- Collective. Over MPI ranks: on rank 0 every grain of every rank as one process's state
     //- (grains in id order, each contact's history and each bond once, walls, clock and

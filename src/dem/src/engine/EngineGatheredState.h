@@ -1,8 +1,14 @@
 // EngineGatheredState.h
-// exportGatheredState of EngineImpl: a system decomposed over MPI ranks as one process's state
-// on rank 0, so that a run continues on one process from a time whose parts were written by
-// the ranks (OpenFOAM's reconstructPar gives the fields; this gives the grains' state).
+// A decomposed system and one process's state, both ways:
+//   - exportGatheredState: the system decomposed over MPI ranks as one process's state on
+//     rank 0, so that a run continues on one process from a time whose parts were written by
+//     the ranks (OpenFOAM's reconstructPar gives the fields; this gives the grains' state);
+//   - importWholeState: one process's state into a decomposed system (a run decomposed
+//     afresh): rank 0 takes every grain as its own with the state's pair list and bonds, the
+//     other ranks none, and the first step's rebuild sends each grain to its owner with the
+//     history of each of its pairs and its bonds, as it moves any grain that left its box.
 //
+// The gather:
 // Each rank sends rank 0 its owned grains (every state field, as exportState holds them), the
 // contact history of each listed pair whose lower-id grain it owns (the owner of a grain
 // lists every pair of that grain, so each pair is sent once, by one rank), and the bonds it
@@ -222,6 +228,62 @@ SystemState EngineImpl<Exec>::exportGatheredState() const
                                             bondTotals.brokenCreep.end());
     }
     return s;
+}
+
+template <class Exec>
+void EngineImpl<Exec>::importWholeState(const SystemState& whole)
+{
+    using namespace stateDetail;
+    const HaloState<Exec>& h = *halo_;
+    const int me = h.comm->rank(), ranks = h.comm->size();
+    const std::vector<std::int64_t>& counters = entry(whole.integers, "counters");
+    if (counters.size() != 6)
+        throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
+                    " entries, expected 6");
+    const std::int64_t total = counters[5];
+    SystemState s = whole;
+    s.integers["halo.decomposition"] = {me, ranks, params_.decomposition.ranks[0],
+                                        params_.decomposition.ranks[1]};
+    s.integers["halo.counts"] = {total, 0}; // ids 0 .. total-1 taken; no ghosts yet
+    for (const char* lists : {"halo.sentIds", "halo.ghostIds"})
+    {
+        s.integers[std::string(lists) + "Counts"].assign(std::size_t(ranks), 0);
+        s.integers[lists].clear();
+    }
+    // Bond totals: rank 0's share is the whole's (bondCounts sums the ranks' shares)
+    std::vector<double> bondShare(6, 0.0);
+    const auto bondCounters = whole.integers.find("bonds.counters");
+    const auto brokenCreep = whole.reals.find("bonds.brokenCreep");
+    if (me == 0 && bondCounters != whole.integers.end() && bondCounters->second.size() == 2)
+    {
+        bondShare[0] = double(bondCounters->second[0]);
+        bondShare[1] = double(bondCounters->second[1]);
+        if (brokenCreep != whole.reals.end() && brokenCreep->second.size() == 4)
+            std::copy(brokenCreep->second.begin(), brokenCreep->second.end(),
+                      bondShare.begin() + 2);
+    }
+    s.reals["halo.bondCounts"] = bondShare;
+    // a rebuild at the first step: it moves the grains to their owners
+    s.integers["counters"] = {counters[0], counters[1], me == 0 ? counters[2] : 0,
+                              1,           counters[4], me == 0 ? total : 0};
+    if (me != 0) // no grains, no pairs, no bonds here until the first rebuild
+    {
+        for (auto& [name, values] : s.reals)
+            if (name.rfind("grain.", 0) == 0 || name.rfind("bonds.", 0) == 0 ||
+                name == "pairs.history")
+                values.clear();
+        for (auto& [name, values] : s.integers)
+            if (name.rfind("grain.", 0) == 0 || name.rfind("bonds.", 0) == 0 ||
+                name == "pairs.partner" || name == "pairs.incomingPair")
+                values.clear();
+        s.integers["pairs.start"] = {0};
+        s.integers["pairs.incomingStart"] = {0};
+        if (s.integers.count("bonds.first"))
+            s.integers["bonds.counters"] = {0, 0};
+        if (s.reals.count("bonds.brokenCreep"))
+            s.reals["bonds.brokenCreep"].assign(4, 0.0);
+    }
+    importState(s);
 }
 
 } // namespace detail

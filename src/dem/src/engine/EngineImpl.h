@@ -232,6 +232,8 @@ private:
     //- The decomposed part of exportState / importState (restart on the same decomposition).
     void exportHalo(SystemState& s) const;
     void importHalo(const SystemState& s);
+    //- importState of one process's state into a decomposed engine (EngineGatheredState.h).
+    void importWholeState(const SystemState& whole);
     //- bondCounts over MPI ranks (EngineBonds.h).
     BondCounts decomposedBondCounts() const;
     //- Per bond in store order: 1 for the bonds this rank reports (all on one process; over

@@ -138,6 +138,8 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     if (entry(s.integers, "walls.layout") != std::vector<std::int64_t>{kMaxWalls})
         throw Error("importState: the state's wall layout (walls.layout) is not this version's (" +
                     std::to_string(kMaxWalls) + " walls)");
+    if (halo_ && s.integers.find("halo.decomposition") == s.integers.end())
+        return importWholeState(s); // one process's state, distributed by the first rebuild
     const std::vector<std::int64_t>& counters = entry(s.integers, "counters");
     if (counters.size() != 6)
         throw Error("importState: 'counters' has " + std::to_string(counters.size()) +

@@ -11,7 +11,7 @@
 //     other owns nothing).
 //   - A restart from each rank's exported state continues bit for bit, with bonds too; the
 //     state gathered on rank 0 continues on one process with the split run's kinetic energy
-//     and bond counts.
+//     and bond counts, and a one-process state continues split as on one process.
 //   - Bonded capsules sheared across the boundaries (bonds forming, breaking and travelling
 //     with their grains) end with the one-process kinetic energy and bond counts.
 //   - The fluid coupling: the deposit and the grains' reaction summed over the ranks equal the
@@ -147,6 +147,14 @@ dem::Parameters withFrozenBonds(dem::Parameters p, double rMax)
     p.bonds.strength = dem::BondStrength::constant;
     p.bonds.tensileStrength = p.bonds.shearStrength = 1e8;
     return p;
+}
+
+//- The grains with v_x = 20 (z - 0.05) / 0.05 m/s: a shear that carries them across the cuts.
+std::vector<dem::GrainInit> sheared(std::vector<dem::GrainInit> grains)
+{
+    for (dem::GrainInit& g : grains)
+        g.velocity = {20.0 * (g.position[2] - 0.05) / 0.05, 0.0, 0.0};
+    return grains;
 }
 
 //- Kinetic energy of the grains in g (this rank's, or all of a one-process System's).
@@ -388,9 +396,7 @@ TEST_P(Decomposition, BondedCapsulesAcrossTheBoundaryFollowOneProcess)
 TEST_P(Decomposition, RestartFromDecomposedStateIsExact)
 {
     const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
-    std::vector<dem::GrainInit> grains = packing.grains;
-    for (dem::GrainInit& g : grains)
-        g.velocity = {20.0 * (g.position[2] - 0.05) / 0.05, 0.0, 0.0};
+    const std::vector<dem::GrainInit> grains = sheared(packing.grains);
     for (const bool bonded : {false, true})
     {
         dem::Parameters p = shearParameters(GetParam(), packing.length, 8e-4);
@@ -440,9 +446,7 @@ TEST_P(Decomposition, RestartFromDecomposedStateIsExact)
 TEST_P(Decomposition, GatheredStateContinuesOnOneProcess)
 {
     const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
-    std::vector<dem::GrainInit> grains = packing.grains;
-    for (dem::GrainInit& g : grains)
-        g.velocity = {20.0 * (g.position[2] - 0.05) / 0.05, 0.0, 0.0};
+    const std::vector<dem::GrainInit> grains = sheared(packing.grains);
     const double eps = std::numeric_limits<double>::epsilon();
     for (const bool bonded : {false, true})
     {
@@ -499,6 +503,73 @@ TEST_P(Decomposition, GatheredStateContinuesOnOneProcess)
                     bonded ? "bonded" : "unbonded", energyEnd, energyOne, energyForgetful,
                     countsEnd.intact, one.bondCounts().intact, countsEnd.broken,
                     one.bondCounts().broken);
+    }
+}
+
+// The other way: a one-process run's state imported by a split System (every rank passes the
+// same state; rank 0 takes it whole, the first step's rebuild sends each grain to its owner with
+// its pairs' histories and bonds). After 700 more steps of both the split run ends with the
+// one-process kinetic energy within 1e-6 relative and the same bond counts; without bonds the
+// same import with the histories zeroed ends further away than that.
+TEST_P(Decomposition, OneProcessStateContinuesSplit)
+{
+    const dem::Packing packing = bottomOfBenchmarkPacking(0.1);
+    const std::vector<dem::GrainInit> grains = sheared(packing.grains);
+    for (const bool bonded : {false, true})
+    {
+        dem::Parameters p = shearParameters(GetParam(), packing.length, 8e-4);
+        if (bonded)
+            p = withFrozenBonds(p, 0.0105);
+        // every rank runs the same one-process System (no MPI calls), so each holds its state
+        dem::System one(p);
+        one.addGrains(grains);
+        one.step(700);
+        const dem::SystemState state = one.exportState();
+        const dem::BondCounts countsAtExport = one.bondCounts();
+        one.step(700);
+        const double energyOne = kineticEnergy(one.grains());
+        const dem::BondCounts countsOne = one.bondCounts();
+
+        auto splitFrom = [&](const dem::SystemState& s, dem::BondCounts& atImport,
+                             dem::BondCounts& atEnd, std::size_t& count)
+        {
+            dem::System split(splitIf(p, true));
+            split.importState(s);
+            atImport = split.bondCounts();
+            split.step(700);
+            atEnd = split.bondCounts();
+            count = split.grainCount();
+            return mpi->sum(kineticEnergy(split.grains()));
+        };
+        dem::BondCounts atImport, atEnd;
+        std::size_t count = 0;
+        const double energySplit = splitFrom(state, atImport, atEnd, count);
+        EXPECT_EQ(count, grains.size());
+        EXPECT_EQ(atImport.intact, countsAtExport.intact);
+        EXPECT_EQ(atImport.formed, countsAtExport.formed);
+        EXPECT_EQ(atImport.broken, countsAtExport.broken);
+        EXPECT_NEAR(energySplit, energyOne, 1e-6 * energyOne);
+        EXPECT_EQ(atEnd.intact, countsOne.intact);
+        EXPECT_EQ(atEnd.formed, countsOne.formed);
+        EXPECT_EQ(atEnd.broken, countsOne.broken);
+        double energyForgetful = 0.0;
+        if (bonded)
+            EXPECT_GT(countsAtExport.intact, 0u);
+        else
+        {
+            dem::SystemState forgetful = state;
+            std::vector<double>& history = forgetful.reals["pairs.history"];
+            std::fill(history.begin(), history.end(), 0.0);
+            dem::BondCounts unused;
+            energyForgetful = splitFrom(forgetful, unused, unused, count);
+            EXPECT_GT(std::fabs(energyForgetful - energyOne), 1e-6 * energyOne);
+        }
+        if (mpi->rank() == 0)
+            std::printf("  %s: KE after 700 more steps %.12g J on one process, %.12g J split from "
+                        "its state (%.12g J with the histories zeroed); bonds intact %zu / %zu, "
+                        "broken %zu / %zu\n",
+                        bonded ? "bonded" : "unbonded", energyOne, energySplit, energyForgetful,
+                        countsOne.intact, atEnd.intact, countsOne.broken, atEnd.broken);
     }
 }
 
