@@ -41,12 +41,7 @@ SystemState EngineImpl<Exec>::exportGatheredState() const
     const int n = grains_.size();
 
     using haloDetail::HostGrains;
-    HostGrains local;
-    local.n = n;
-    for (int f = 0; f < kRealFieldCount; ++f)
-        local.reals[f] = grains_.hostReal(f);
-    for (int f = 0; f < kIntFieldCount; ++f)
-        local.ints[f] = grains_.hostInt(f);
+    HostGrains local = HostGrains::of(grains_);
     const std::vector<int>& flag = local.ints[fFlag];
     const std::vector<int>& id = local.ints[fId];
     std::unordered_map<std::int64_t, int> localIndex;

@@ -74,6 +74,19 @@ struct HostGrains
     std::array<std::vector<double>, kRealFieldCount> reals;
     std::array<std::vector<int>, kIntFieldCount> ints;
 
+    //- Every field of a grain storage, copied to the host.
+    template <class Storage>
+    static HostGrains of(const Storage& grains)
+    {
+        HostGrains h;
+        h.n = grains.size();
+        for (int f = 0; f < kRealFieldCount; ++f)
+            h.reals[f] = grains.hostReal(f);
+        for (int f = 0; f < kIntFieldCount; ++f)
+            h.ints[f] = grains.hostInt(f);
+        return h;
+    }
+
     void resize(int m)
     {
         n = m;
@@ -179,12 +192,7 @@ void EngineImpl<Exec>::redistribute()
         refreshGhosts();
         Exec::forEach(n, UnpackGrains{grains_.view()});
     }
-    HostGrains old;
-    old.n = n;
-    for (int f = 0; f < kRealFieldCount; ++f)
-        old.reals[f] = grains_.hostReal(f);
-    for (int f = 0; f < kIntFieldCount; ++f)
-        old.ints[f] = grains_.hostInt(f);
+    HostGrains old = HostGrains::of(grains_);
     const std::vector<int>& flag = old.ints[fFlag];
     const std::vector<int>& id = old.ints[fId];
 
