@@ -78,6 +78,14 @@ SOLVERS = ("darcyDemFoam", "demFoam", "nsDemFoam")
 MPI_ENVIRONMENT = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
 
 
+def usable_cores():
+    """The cores this process may run on (its CPU affinity; else os.cpu_count())."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:
+        return os.cpu_count() or 1
+
+
 def ranks_override():
     """The MPI rank count named by DARCYDEM_RANKS (1 when unset)."""
     value = os.environ.get(RANKS_VARIABLE, "").strip() or "1"
@@ -175,7 +183,7 @@ class Case:
             command = [mpirun, "-np", str(self.ranks), "--oversubscribe", *command, "-parallel"]
             env = dict(os.environ, **MPI_ENVIRONMENT)
             # the cores shared among the ranks, unless set
-            env.setdefault("OMP_NUM_THREADS", str(max(1, (os.cpu_count() or 1) // self.ranks)))
+            env.setdefault("OMP_NUM_THREADS", str(max(1, usable_cores() // self.ranks)))
         log = self.file("log." + app)
         with open(log, "w") as out:
             rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT, env=env)

@@ -46,10 +46,11 @@ import re
 import shutil
 import subprocess
 import sys
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from darcydem.case import Case
+from darcydem.case import Case, ranks_override, usable_cores
 from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, grain_files, read_columns, read_scalar_entry,
                                 read_vtp, time_dirs)
@@ -125,7 +126,7 @@ DIAGNOSTICS_COLUMNS = dict(
 
 class ShearStudy:
     def __init__(self, study_dir, size="quick", rate_series=True, log=say,
-                 fluid_force=FLUID_FORCES[0], reuse=False):
+                 fluid_force=FLUID_FORCES[0], reuse=False, jobs=None):
         if size not in SIZES:
             sys.exit(f"shearStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         if fluid_force not in FLUID_FORCES:
@@ -133,6 +134,12 @@ class ShearStudy:
                      f"valid: {' '.join(FLUID_FORCES)}")
         self.fluid_force = fluid_force
         self.reuse = reuse
+        # shear stages run at once (shear_all): by default one per core the
+        # solvers' ranks leave free, so that on 2 cores two 1-thread stages
+        # run side by side (a bed of ~1000 grains gains nothing from a second
+        # thread of one process: src/dem/README.md, Benchmark)
+        self.cores = usable_cores()
+        self.jobs = jobs or max(1, self.cores // ranks_override())
         # suffix of the saturated stages, the results file and the figures
         self.suffix = "" if fluid_force == FLUID_FORCES[0] else "-" + fluid_force
         self.s = dict(SIZES[size])
@@ -331,9 +338,12 @@ class ShearStudy:
         return PAPER_MU * (PAPER_HEIGHT**2 * PAPER_BETA * paper_gamma_dot) / (
             self.height**2 * self.beta * gamma_dot)
 
-    def shear(self, name, kc=None, mu_factor=1.0, velocity_factor=1.0, strain=None):
+    def shear(self, name, kc=None, mu_factor=1.0, velocity_factor=1.0, strain=None,
+              threads=None):
         """One shear case from the prepared packing; kc None: dry. A
-        saturated case runs in stages/<name><suffix> (fluid force model)."""
+        saturated case runs in stages/<name><suffix> (fluid force model).
+        threads: the stage's DEM threads (demProperties threads; None: the
+        template's)."""
         s = self.s
         app = "demFoam" if kc is None else "darcyDemFoam"
         stage = name if kc is None else name + self.suffix
@@ -342,6 +352,8 @@ class ShearStudy:
         strain = strain or s["strain"]
         dem = "constant/demProperties"
         c.set(dem, "viscousDrag", 0)
+        if threads is not None:
+            c.set(dem, "threads", threads)
         c.set(dem, "walls/top/position", "%.12g" % self.height)  # as in the demState
         c.set(dem, "grainFlags",
               "{ base { flag fixed; zMax %.12g; } top { flag prescribedVelocity; zMin %.12g;"
@@ -436,7 +448,35 @@ class ShearStudy:
                                    for n, q in ratios.items()))
 
     # ---- the experiment -------------------------------------------------------------------
-    def run(self):
+    def shear_all(self, cases):
+        """Run the shear cases {key: (name, shear() keywords)}, each from the
+        prepared packing, self.jobs at a time (they depend on nothing but
+        the packing); returns {key: summary}. Submitted in the given order,
+        so list the longest first. With more than one job each stage's
+        DEM runs on its share of the cores (demProperties threads): a
+        stage's results do not depend on its thread count (the library's
+        sums run in a fixed order), so they are those of one at a time."""
+        if self.jobs == 1 or len(cases) == 1:
+            return {key: self.shear(name, **kw) for key, (name, kw) in cases.items()}
+        threads = max(1, self.cores // min(self.jobs, len(cases)))
+        self.log(f"shearStudy: {len(cases)} shear stages, {self.jobs} at a time, "
+                 f"{threads} DEM thread{'s' if threads > 1 else ''} each (--jobs)")
+        with ThreadPoolExecutor(max_workers=self.jobs) as pool:
+            futures = {key: pool.submit(self.shear, name, threads=threads, **kw)
+                       for key, (name, kw) in cases.items()}
+            try:
+                return {key: f.result() for key, f in futures.items()}
+            except BaseException:
+                for f in futures.values():  # the stages not started yet
+                    f.cancel()
+                raise
+
+    def run(self, checks=False):
+        """The study: packing, the three shears and (rate_series) the rate
+        series; with checks also the cases the shear test compares beside
+        them: the dry shear at half the velocity (rate independence) and
+        the velocity-scaling pair (impermeable at v with mu_f/2, and at v/2
+        with mu_f)."""
         self.curves = {}
         reused = self.reuse and self.reuse_prepared()
         if not reused:
@@ -444,34 +484,45 @@ class ShearStudy:
         r = self.results
         r["shearVelocity"] = self.shear_velocity()
         r["referenceViscosity"] = self.reference_viscosity()
-        r["dry"] = (reused and self.reused_dry()) or self.shear("dry")
-        r["permeable"] = self.shear("permeable", kc=PERMEABLE_KC)
-        r["impermeable"] = self.shear("impermeable", kc=IMPERMEABLE_KC)
+        dry = reused and self.reused_dry()
+        strain = self.s["rateStrain"]
+        impermeable = dict(kc=IMPERMEABLE_KC)
+        # longest first (the saturated stages cost more per step than the dry one,
+        # the rate series and the checks' v/2 cases shear less far)
+        cases = {"permeable": ("permeable", dict(kc=PERMEABLE_KC)),
+                 "impermeable": ("impermeable", impermeable)}
+        if checks:
+            cases["dryHalfVelocity"] = ("dry_half", dict(velocity_factor=0.5))
+        if not dry:
+            cases["dry"] = ("dry", {})
+        if checks:
+            cases["impermeableHalfVelocity"] = ("impermeable_halfVelocity",
+                                                dict(impermeable, velocity_factor=0.5,
+                                                     strain=strain))
+        series = (0.1, 0.01) if self.rate_series else ()
+        for factor in series:
+            cases["mu%g" % factor] = ("impermeable_mu%g" % factor,
+                                       dict(impermeable, mu_factor=factor, strain=strain))
+        if checks:
+            cases["impermeableHalfMu"] = ("impermeable_halfMu",
+                                          dict(impermeable, mu_factor=0.5, strain=strain))
+        done = self.shear_all(cases)
+        r["dry"] = dry or done["dry"]
+        r["permeable"], r["impermeable"] = done["permeable"], done["impermeable"]
         if self.rate_series:
-            strain = self.s["rateStrain"]
             r["rate"] = {"1": r["impermeable"]}
-            for factor in (0.1, 0.01):
-                name = "impermeable_mu%g" % factor
-                r["rate"]["%g" % factor] = self.shear(name, kc=IMPERMEABLE_KC,
-                                                      mu_factor=factor, strain=strain)
+            for factor in series:
+                r["rate"]["%g" % factor] = done["mu%g" % factor]
         self.coupling_cost()
+        if checks:
+            for key in ("dryHalfVelocity", "impermeableHalfMu", "impermeableHalfVelocity"):
+                r[key] = done[key]
         self.write_results()
         return r
 
     def run_with_checks(self):
-        """run(), then the cases the shear test compares beside it: the dry
-        shear at half the velocity (rate independence) and the velocity-
-        scaling pair (impermeable at v with mu_f/2, and at v/2 with mu_f)."""
-        r = self.run()
-        strain = self.s["rateStrain"]
-        r["dryHalfVelocity"] = self.shear("dry_half", velocity_factor=0.5)
-        r["impermeableHalfMu"] = self.shear("impermeable_halfMu", kc=IMPERMEABLE_KC,
-                                            mu_factor=0.5, strain=strain)
-        r["impermeableHalfVelocity"] = self.shear("impermeable_halfVelocity",
-                                                  kc=IMPERMEABLE_KC, velocity_factor=0.5,
-                                                  strain=strain)
-        self.write_results()
-        return r
+        """run() with the cases the shear test compares beside it."""
+        return self.run(checks=True)
 
     def results_name(self):
         return "results%s.json" % self.suffix
@@ -637,10 +688,16 @@ def main(argv):
                     help="take the packing and the dry shear from finished stages of an "
                     "earlier run of the same size (e.g. the default model's) instead of "
                     "running them again")
+    ap.add_argument("--jobs", type=int, default=None,
+                    help="shear stages run at once after the packing, each on its share "
+                    "of the cores (default: the cores over the ranks of -parallel, so "
+                    "two 1-thread stages on 2 cores); 1: one after the other")
     a = parse_study_args(ap, argv)
+    if a.jobs is not None and a.jobs < 1:
+        sys.exit(f"shearStudy: --jobs {a.jobs}: give 1 or more stages at once")
     require_folder("shearStudy", a.study_dir, TEMPLATE_FILES)
     study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series,
-                       fluid_force=a.fluid_force, reuse=a.reuse_packing)
+                       fluid_force=a.fluid_force, reuse=a.reuse_packing, jobs=a.jobs)
     results = study.run()
     figures = study.plot()
     say(json.dumps({k: v for k, v in results.items() if k != "settings"}, indent=2))

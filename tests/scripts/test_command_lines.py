@@ -92,6 +92,19 @@ def test_settlement_scales_must_be_positive(tmp_path, option, message):
     assert not os.path.exists(tmp_path / "study" / "stages")
 
 
+def test_shear_jobs_must_be_positive(tmp_path):
+    """shearStudy --jobs 0 (no shear stage could run): one line naming the
+    option, before any folder is looked at or made."""
+    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", "shear"),
+                    tmp_path / "study", ignore=shutil.ignore_patterns(
+                        "stages", "*.png", "results*.json", "log.*"))
+    r = run(["shearStudy", "study", "--jobs", "0"], tmp_path)
+    print(r.stderr)
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+    assert r.stderr.strip() == "shearStudy: --jobs 0: give 1 or more stages at once"
+    assert not os.path.exists(tmp_path / "study" / "stages")
+
+
 def test_make_grains_missing_output_folder(tmp_path):
     start = time.monotonic()
     r = run(["makeGrains", *MAKE_GRAINS_ARGS, "--count", "10", "-o", "typo/grains"], tmp_path)
