@@ -13,9 +13,16 @@ import threading
 import time
 
 
+_SAY_LOCK = threading.Lock()
+
+
 def say(message):
-    """Print a progress line now, also into a pipe (tee, a test)."""
-    print(message, flush=True)
+    """Print a progress line now, also into a pipe (tee, a test); whole
+    lines from concurrent stages (shearStudy --jobs): print() writes the
+    text and its newline separately, so two threads could mix them."""
+    with _SAY_LOCK:
+        sys.stdout.write(f"{message}\n")
+        sys.stdout.flush()
 
 
 def require_folder(prog, folder, needs):
