@@ -221,7 +221,8 @@ class Run:
 
 class SettlementStudy:
     def __init__(self, study_dir, size="quick", log=say,
-                 preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None):
+                 preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None,
+                 bond_point=None):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
@@ -236,9 +237,11 @@ class SettlementStudy:
         self.loose = (lx * CONTRACTION, ly, lz * CONTRACTION)
         self.preparation_viscosity = preparation_viscosity
         self.strength_scale = strength_scale   # None: the template's
+        self.bond_point = bond_point           # None: the template's (closestPoints)
         self.results = {"size": size, "settings": dict(self.s), "runs": {}}
         self.results["settings"]["preparationViscosity"] = preparation_viscosity
         self.results["settings"]["strengthScale"] = strength_scale
+        self.results["settings"]["bondPoint"] = bond_point
 
     # ---- stages ---------------------------------------------------------------------------
     def stage(self, name, state_from=None):
@@ -255,6 +258,8 @@ class SettlementStudy:
         os.makedirs(c.file("0"), exist_ok=True)
         if self.strength_scale is not None:
             c.set("constant/demProperties", "bonds/strength/scale", "%g" % self.strength_scale)
+        if self.bond_point is not None:
+            c.set("constant/demProperties", "bonds/point", "{ type %s; }" % self.bond_point)
         return c.mesh(state_from)
 
     def final_walls(self):
@@ -775,6 +780,9 @@ def main(argv):
     ap.add_argument("--strength-scale", type=float, metavar="SCALE",
                     help="the bonds' strength scale (of sigma_ice) in every stage, instead of"
                          " the template's (the paper's scaling: 1e-3)")
+    ap.add_argument("--bond-point", choices=("closestPoints", "bodyFixedPatches"),
+                    help="where the bonds sit in every stage (doc/CASE-FORMAT.md, bonds point;"
+                         " the template's: closestPoints)")
     ap.add_argument("--preparation-sweep", action="store_true",
                     help="only the contraction, at several contact viscosities and"
                          " strain rates: bonds frozen and broken (settlementPreparation.png)")
@@ -789,7 +797,7 @@ def main(argv):
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             preparation_viscosity=a.preparation_viscosity,
-                            strength_scale=a.strength_scale)
+                            strength_scale=a.strength_scale, bond_point=a.bond_point)
     if a.preparation_sweep:
         study.preparation_sweep()
         return

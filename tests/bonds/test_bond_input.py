@@ -1,6 +1,6 @@
 """The 'bonds' dictionary of constant/demProperties (issue 11): one run-time
 selected model per mechanism family (creep, compressiveCreep, strength,
-sintering, formation). A missing or unknown type stops naming the valid
+sintering, formation) and of where a bond sits (point). A missing or unknown type stops naming the valid
 ones, a value out of range stops naming the file, the entry, the value and
 the range, an unknown entry in 'bonds' stops naming the valid entries.
 Case: tests/cases/grainColumn run by demFoam (stops before the first step)."""
@@ -18,6 +18,7 @@ FAMILIES = {
     "strength": ["constant", "iceTemperature", "none"],
     "sintering": ["none", "pressureSintering"],
     "formation": ["frozenOnContact", "none"],
+    "point": ["bodyFixedPatches", "closestPoints"],
 }
 # Every mechanism on: the entries each test spoils one by one
 VALID = {
@@ -26,6 +27,7 @@ VALID = {
     "strength": "type iceTemperature; scale 1e-3; softeningRatio 1; brokenFraction 0.05;",
     "sintering": "type pressureSintering;",
     "formation": "type frozenOnContact; areaFraction (0.03125 0.09375); interval 10; seed 1;",
+    "point": "type bodyFixedPatches;",
 }
 
 
@@ -49,11 +51,12 @@ def run(name, bonds, expect_fail=True):
 
 
 def test_every_mechanism_is_read():
-    """All five mechanisms on: the run starts and the log names each model."""
+    """All five mechanisms on and the patches body-fixed: the run starts and
+    the log names each model."""
     log = run("all_on", bonds_entry(), expect_fail=False)
     for family, model in [("creep", "maxwell"), ("compressive creep", "powerLaw"),
                           ("strength", "iceTemperature"), ("sintering", "pressureSintering"),
-                          ("formation", "frozenOnContact")]:
+                          ("formation", "frozenOnContact"), ("point", "bodyFixedPatches")]:
         assert f"bond {family} {model}" in log
 
 
@@ -64,8 +67,9 @@ def test_zero_strength_switches_one_failure_mode_off():
 
 
 def test_left_out_mechanism_is_off_and_logged():
-    log = run("creep_left_out", bonds_entry(creep=None), expect_fail=False)
+    log = run("creep_left_out", bonds_entry(creep=None, point=None), expect_fail=False)
     assert "bond creep none (no 'creep' entry)" in log
+    assert "bond point closestPoints (no 'point' entry)" in log
 
 
 @pytest.mark.parametrize("family", FAMILIES)

@@ -92,6 +92,20 @@ def test_settlement_scales_must_be_positive(tmp_path, option, message):
     assert not os.path.exists(tmp_path / "study" / "stages")
 
 
+def test_settlement_bond_point_names_the_valid_ones(tmp_path):
+    """settlementStudy --bond-point sticky: refused naming both valid models,
+    before any folder is made."""
+    shutil.copytree(os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement"),
+                    tmp_path / "study", ignore=shutil.ignore_patterns(
+                        "stages", "*.png", "results.json", "log.*"))
+    r = run(["settlementStudy", "study", "--bond-point", "sticky"], tmp_path)
+    print(r.stderr)
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+    assert "--bond-point" in r.stderr and "'sticky'" in r.stderr
+    assert "closestPoints" in r.stderr and "bodyFixedPatches" in r.stderr
+    assert not os.path.exists(tmp_path / "study" / "stages")
+
+
 def test_shear_jobs_must_be_positive(tmp_path):
     """shearStudy --jobs 0 (no shear stage could run): one line naming the
     option, before any folder is looked at or made."""

@@ -10,6 +10,7 @@
 #include "bondStrengthModel.H"
 #include "bondSinteringModel.H"
 #include "bondFormationModel.H"
+#include "bondPointModel.H"
 #include "wordList.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -20,7 +21,7 @@ namespace
 //- The mechanism families: their entry in 'bonds'
 const Foam::wordList mechanismNames
 ({
-    "creep", "compressiveCreep", "strength", "sintering", "formation"
+    "creep", "compressiveCreep", "strength", "sintering", "formation", "point"
 });
 
 //- The elastic patch's entries
@@ -31,21 +32,23 @@ const Foam::wordList constantNames
 });
 
 
-//- The Family model of mechanism key, or its 'none' when 'bonds' has no
-//- such entry
+//- The Family model of mechanism key, or its default (the dem::BondParameters
+//- default, named fallback: 'none' for a mechanism) when 'bonds' has no such
+//- entry
 template<class Family>
 void setMechanism
 (
     const Foam::dictionary& bonds,
     const Foam::word& key,
-    dem::BondParameters& parameters
+    dem::BondParameters& parameters,
+    const Foam::word& fallback = "none"
 )
 {
     using namespace Foam;
     if (!bonds.found(key))
     {
-        Info<< "    bond " << key << " none (no '" << key << "' entry)"
-            << endl;
+        Info<< "    bond " << key << " " << fallback << " (no '" << key
+            << "' entry)" << endl;
         return;
     }
     if (!bonds.isDict(key))
@@ -81,6 +84,7 @@ void Foam::bondProperties::selectMechanisms(const dictionary& bonds)
     setMechanism<bondStrengthModel>(bonds, "strength", parameters_);
     setMechanism<bondSinteringModel>(bonds, "sintering", parameters_);
     setMechanism<bondFormationModel>(bonds, "formation", parameters_);
+    setMechanism<bondPointModel>(bonds, "point", parameters_, "closestPoints");
 }
 
 

@@ -117,6 +117,14 @@ enum class BondFormation
     frozenOnContact //!< every touching unbonded pair freezes: r_b^2 uniform in areaFraction r^2
 };
 
+//- Where a bond sits and which way it faces (src/kernels/bonds/BondGeometry.h).
+enum class BondPoint
+{
+    closestPoints,   //!< the cores' closest points, taken afresh every step
+    bodyFixedPatches //!< the paper's: patch centres held in the grains' body frames, moved by
+                     //!< creep; the normal between the cores at the bond's point
+};
+
 //- Bonds (frozen ice contacts): a store separate from the neighbour list. Off by default.
 struct BondParameters
 {
@@ -127,6 +135,7 @@ struct BondParameters
     double normalDampingRatio = 0.0;     //!< dashpot on N, fraction of critical (reduced mass)
     double shearDampingRatio = 0.0;      //!< dashpot on S, fraction of critical
     double temperature = -10.0;          //!< T [degrees C] (strength, creep, sintering)
+    BondPoint point = BondPoint::closestPoints; //!< where the bond sits
     // grain-boundary creep: tau_shear = tau_twist = nu_s / (0.6 E), tau_bend = nu_s / E
     BondCreep creep = BondCreep::none;
     double contactViscosity = 0.0;                               //!< nu_s [Pa s] (> 0 with maxwell)

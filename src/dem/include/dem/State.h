@@ -66,14 +66,14 @@ struct WallData
 struct BondData
 {
     std::vector<int> first, second;
-    std::vector<double> patchRadius; //!< r_b [m]
-    std::vector<double> normalForce; //!< N [N], tension positive (elastic part)
-    std::vector<double> shearForce;  //!< S [N] (3), in the contact plane
-    std::vector<double> twistMoment; //!< M_t [N m] along the normal (scalar)
-    std::vector<double> bendMoment;  //!< M_b [N m] (3), in the contact plane
-    std::vector<double> normal;      //!< n (3), unit, from first to second (cores' closest points)
-    std::vector<double> point;       //!< contact point (3), wrapped into the periodic box
-    std::vector<double> age;         //!< time since the bond formed [s]
+    std::vector<double> patchRadius;     //!< r_b [m]
+    std::vector<double> normalForce;     //!< N [N], tension positive (elastic part)
+    std::vector<double> shearForce;      //!< S [N] (3), in the contact plane
+    std::vector<double> twistMoment;     //!< M_t [N m] along the normal (scalar)
+    std::vector<double> bendMoment;      //!< M_b [N m] (3), in the contact plane
+    std::vector<double> normal;          //!< n (3), unit, from first to second (patches' bisector)
+    std::vector<double> point;           //!< contact point (3), wrapped into the periodic box
+    std::vector<double> age;             //!< time since the bond formed [s]
     std::vector<std::uint8_t> softening; //!< 1 once r_b shrinks (past peak strength)
     //- Creep since the bond formed, per mechanism: path length of the creep displacement,
     //- normal and shear [m], twist and bend [rad] (doc/EQUATIONS.md, "Bonds").

@@ -53,7 +53,10 @@ inline const std::vector<BondField>& bondFields()
         {"creepShear", kBondCreepShear, 1, true},
         {"creepTwist", kBondCreepTwist, 1, true},
         {"creepBend", kBondCreepBend, 1, true},
-        {"normalCreepOffset", kBondNormalCreepOffset, 1, true}};
+        {"normalCreepOffset", kBondNormalCreepOffset, 1, true},
+        // States written before the patches: placed again at the first step (BondPatches)
+        {"patchPointA", kBondPatchPointA, 3, true},
+        {"patchPointB", kBondPatchPointB, 3, true}};
     return fields;
 }
 

@@ -28,7 +28,8 @@ inline namespace DEM_KERNEL_NS
 {
 //- The per-step state of grain index[k] copied into record k of buffer (gather) or back from it
 //- (scatter): packed position and radius (4), packed velocities with inverse mass and inertia
-//- (8); with capsules also orientation (4), angular momentum (3) and packed half-axis (4).
+//- (8); with capsules or bonds (EngineImpl::ghostsTurn) also orientation (4), angular momentum
+//- (3) and packed half-axis (4).
 struct GhostStepState
 {
     GrainView g;
@@ -496,8 +497,7 @@ void EngineImpl<Exec>::indexGhostExchange()
     internal.reserve(std::size_t(n));
     for (int i = 0; i < n; ++i)
         internal[id[i]] = i;
-    const int width =
-        grains_.hasCapsules() ? GhostStepState::kCapsuleWidth : GhostStepState::kSphereWidth;
+    const int width = ghostsTurn() ? GhostStepState::kCapsuleWidth : GhostStepState::kSphereWidth;
     std::vector<int> sendIndex, receiveIndex;
     h.sendOffset.assign(1, 0);
     h.receiveOffset.assign(1, 0);
@@ -525,7 +525,7 @@ void EngineImpl<Exec>::refreshGhosts()
 {
     HaloState<Exec>& h = *halo_;
     const int ranks = h.comm->size();
-    const bool capsules = grains_.hasCapsules();
+    const bool capsules = ghostsTurn();
     const int width = capsules ? GhostStepState::kCapsuleWidth : GhostStepState::kSphereWidth;
     const long sent = h.sendOffset.back(), received = h.receiveOffset.back();
     h.buffer.resize(std::size_t(std::max(sent, received)) * width);

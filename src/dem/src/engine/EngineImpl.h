@@ -229,6 +229,9 @@ private:
     void indexGhostExchange();
     //- After every drift (no rebuild): the owners' step state onto the ghosts.
     void refreshGhosts();
+    //- Whether the ghosts' step state includes their orientation: capsules (their cores), and
+    //- spheres with bonds (the patches turn with the grains).
+    bool ghostsTurn() const { return grains_.hasCapsules() || params_.bonds.enabled; }
     //- The decomposed part of exportState / importState (restart on the same decomposition).
     void exportHalo(SystemState& s) const;
     void importHalo(const SystemState& s);

@@ -61,8 +61,9 @@ struct TouchingPairs
 };
 
 //- Read-back of the bonds at the SoA state: each bond's unit normal (3) and contact point (3,
-//- wrapped into the periodic box), and whether its grains touch (1) or not (0) by the contact
-//- count's own test, so that touching pairs plus bonds apart count every pair once.
+//- as the force pass takes them, BondGeometry.h; wrapped into the periodic box), and whether
+//- its grains touch (1) or not (0) by the contact count's own test, so that touching pairs plus
+//- bonds apart count every pair once.
 struct BondReadback
 {
     GrainView g;
@@ -71,13 +72,18 @@ struct BondReadback
     double* normal; //!< 3 per bond
     double* point;  //!< 3 per bond
     double* touching;
+    bool bodyFixed; //!< BondPoint::bodyFixedPatches
 
     DEM_HD void operator()(int b) const
     {
         const int i = bonds.grainA[b], j = bonds.grainB[b];
         const Vector3d xi = g.position(i);
-        const BondGeometry geometry = bondGeometry(box.separation(xi, g.position(j)), g.halfAxis(i),
-                                                   g.halfAxis(j), g.radius[i], g.radius[j]);
+        const Vector3d d = box.separation(xi, g.position(j));
+        const BondGeometry geometry =
+            bodyFixed
+                ? patchGeometry(bonds.loadPatches(b), d, g.orientationOf(i), g.orientationOf(j),
+                                g.halfAxis(i), g.halfAxis(j), g.radius[i], g.radius[j])
+                : bondGeometry(d, g.halfAxis(i), g.halfAxis(j), g.radius[i], g.radius[j]);
         Vector3d c = xi + geometry.offsetA;
         for (int d = 0; d < 2; ++d)
             if (box.periodic[d])

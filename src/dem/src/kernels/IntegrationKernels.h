@@ -89,6 +89,21 @@ DEM_HD void rotate(const GrainView& g, int i, int flag, double dt, const Vector3
     g.packHalfAxis(i);
 }
 
+//- A sphere's drift of orientation in a system with bonds (its bonds' patches turn with it;
+//- without bonds nothing reads a sphere's orientation): q turned by omega dt, exact for the
+//- drift's constant omega.
+DEM_HD void turnSphere(const GrainView& g, int i, const Vector3d& omega, double dt)
+{
+    const double angle = omega.norm() * dt;
+    if (angle > 0.0)
+    {
+        Quaterniond q =
+            Quaterniond(Eigen::AngleAxisd(angle, omega / omega.norm())) * g.orientationOf(i);
+        q.normalize();
+        g.storeOrientation(i, q);
+    }
+}
+
 //- Squared bound on how far any point of grain i's core moved since the last rebuild, x its
 //- centre now: |x - x_build| + |a - a_build| (a point x + u a, |u| <= 1, moved at most that).
 DEM_HD double endsMoved2(const GrainView& g, int i, const Vector3d& x)
@@ -137,6 +152,8 @@ struct KickDrift
         g.angularVelocity.store(i, omega);
         const Vector3d x = g.position(i) + dt * v;
         g.position.store(i, x);
+        if constexpr (Shapes::kBonds)
+            turnSphere(g, i, omega, dt);
         g.pack(i);
         packBuildPosition(g, i);
         return movedOrInfinity((x - g.positionAtBuild(i)).squaredNorm());

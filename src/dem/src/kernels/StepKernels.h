@@ -472,6 +472,8 @@ struct GatherKick
         }
         kick(g, j, flag, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
+        if constexpr (Shapes::kBonds)
+            turnSphere(g, j, omega, dt);
         for (int c = 0; c < 3; ++c)
         {
             xr[c] = x[c];

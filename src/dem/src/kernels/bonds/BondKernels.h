@@ -20,8 +20,8 @@ namespace detail
 inline namespace DEM_KERNEL_NS
 {
 
-//- A bond's stored state (BondState) as component-blocked arrays: component c of bond b at
-//- c * count + b. A new BondState member: a component here, in BondView::load and store
+//- A bond's stored state (BondState and BondPatches) as component-blocked arrays: component c
+//- of bond b at c * count + b. A new member: a component here, in BondView's load and store
 //- and in BondStorage's table (export, import and re-sorting follow).
 enum BondStateComponent
 {
@@ -38,7 +38,10 @@ enum BondStateComponent
     kBondCreepTwist = 14,
     kBondCreepBend = 15,
     kBondNormalCreepOffset = 16,
-    kBondStateComponents = 17
+    // Where the bond sits (BondPatches, BondGeometry.h), in each grain's body frame:
+    kBondPatchPointA = 17, // 3
+    kBondPatchPointB = 20, // 3
+    kBondStateComponents = 23
 };
 
 //- Per bond: force on A (3), torque on A (3), torque on B (3); on B the force is minus A's.
@@ -105,11 +108,33 @@ struct BondView
         x[kBondCreepBend * s] = st.creepBend;
         x[kBondNormalCreepOffset * s] = st.normalCreepOffset;
     }
+    DEM_HD BondPatches loadPatches(long b) const
+    {
+        return BondPatches{vectorAt(b, kBondPatchPointA), vectorAt(b, kBondPatchPointB)};
+    }
+    DEM_HD void storePatches(long b, const BondPatches& p) const
+    {
+        const long s = count;
+        double* x = state + b;
+        for (int c = 0; c < 3; ++c)
+        {
+            x[(kBondPatchPointA + c) * s] = p.pointA[c];
+            x[(kBondPatchPointB + c) * s] = p.pointB[c];
+        }
+    }
+    DEM_HD Vector3d vectorAt(long b, int component) const
+    {
+        const long s = count;
+        const double* x = state + b + component * s;
+        return Vector3d(x[0], x[s], x[2 * s]);
+    }
 };
 
-//- Per bond: its geometry and motion at the packed state, one step of BondLaw::advance (the
-//- state is updated in place) and the load record. Returns 1 for a bond that broke this step
-//- (its loads are zero; the engine removes it before the gather), else 0: the engine sums it.
+//- Per bond: its geometry (BondPoint: the cores' closest points, or its patches in the grains'
+//- body frames) and motion at the packed state, one step of BondLaw::advance (the state is
+//- updated in place), body-fixed patches moved by the step's creep, and the load record.
+//- Returns 1 for a bond that broke this step (its loads are zero; the engine removes it before
+//- the gather), else 0: the engine sums it.
 //- law.dt may be 0 (the loads of freshly added or imported grains: evaluate, do not advance).
 struct BondForceKernel
 {
@@ -137,9 +162,15 @@ struct BondForceKernel
         }
         const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
         const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
+        const Vector3d d = box.separation(xi, xj);
+        const Quaterniond qA = g.orientationOf(i), qB = g.orientationOf(j);
+        const bool bodyFixed = law.p.point == BondPoint::bodyFixedPatches;
+        const BondPatches patches = bonds.loadPatches(b);
         const BondGeometry geometry =
-            bondGeometry(box.separation(xi, xj), g.packedHalfAxisOf(i), g.packedHalfAxisOf(j),
-                         xr[4 * i + 3], xr[4 * j + 3]);
+            bodyFixed ? patchGeometry(patches, d, qA, qB, g.packedHalfAxisOf(i),
+                                      g.packedHalfAxisOf(j), xr[4 * i + 3], xr[4 * j + 3])
+                      : bondGeometry(d, g.packedHalfAxisOf(i), g.packedHalfAxisOf(j), xr[4 * i + 3],
+                                     xr[4 * j + 3]);
         BondMotion motion;
         motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
         motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
@@ -150,6 +181,10 @@ struct BondForceKernel
         BondState state = bonds.load(b);
         const BondLoads loads = law.advance(state, geometry, motion);
         bonds.store(b, state);
+        // A creeping bond's patches moved towards each other (a dt = 0 evaluation changes
+        // nothing; without creep the patches stay as they are on their grains).
+        if (bodyFixed && law.dt > 0.0 && !state.broken && law.creeps)
+            bonds.storePatches(b, creptPatches(patches, qA, qB, loads.creepShift));
         double* out = bonds.loads + long(kBondLoadComponents) * b;
         for (int c = 0; c < 3; ++c)
         {
@@ -159,6 +194,30 @@ struct BondForceKernel
         }
         broken[b] = state.broken ? 1.0 : 0.0;
         return broken[b];
+    }
+};
+
+//- Per bond: a bond not yet placed (formed, added, or imported from a state written before
+//- the patches) gets its patches where the grains' contact is now (bondPlacement), at the
+//- packed state; placed bonds are left as they are.
+struct PlaceBonds
+{
+    GrainView g;
+    BondView bonds;
+    BoxView box;
+
+    DEM_HD void operator()(int b) const
+    {
+        if (bonds.loadPatches(b).placed())
+            return;
+        const long i = bonds.grainA[b], j = bonds.grainB[b];
+        const double* xr = g.packedPositionRadius;
+        const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
+        const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
+        const BondGeometry placement =
+            bondPlacement(box.separation(xi, xj), g.packedHalfAxisOf(i), g.packedHalfAxisOf(j),
+                          xr[4 * i + 3], xr[4 * j + 3]);
+        bonds.storePatches(b, patchesAt(placement, g.orientationOf(i), g.orientationOf(j)));
     }
 };
 
@@ -411,6 +470,8 @@ struct FormBonds
         st.patchRadius = std::sqrt(f) * rMin;
         st.onsetRadius = st.patchRadius;
         bonds.store(b, st);
+        // Not placed yet: PlaceBonds places it where the grains touch now.
+        bonds.storePatches(b, BondPatches{Vector3d::Zero(), Vector3d::Zero()});
     }
 };
 

@@ -56,10 +56,13 @@ struct BondMotion
 };
 
 //- Loads of the bond this step (elastic + viscous): force on A (on B: minus), torques on both
-//- including (contact point - centre) x force.
+//- including (contact point - centre) x force. And the step's normal and shear creep as B's
+//- displacement relative to A (global frame; zero without creep): the patches move by it
+//- towards each other (creptPatches), as the paper's creep brings them into alignment.
 struct BondLoads
 {
     Vector3d forceOnA, torqueOnA, torqueOnB;
+    Vector3d creepShift;
 };
 
 //- The evaluator: constants from BondParameters and the time step (trivially copyable).
@@ -108,7 +111,7 @@ struct BondLaw
     //- state exactly, whatever the mechanisms).
     DEM_HD BondLoads advance(BondState& s, const BondGeometry& g, const BondMotion& m) const
     {
-        BondLoads loads{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
+        BondLoads loads{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
         if (s.broken)
             return loads;
         const Vector3d& n = g.normal;
@@ -117,7 +120,7 @@ struct BondLaw
                                                  m.omegaA, m.omegaB, dt);
         PatchSection patch = PatchSection::make(s.patchRadius, p.youngsModulus,
                                                 p.shearToNormalStiffness, meanRadius);
-        if (dt > 0.0 && !evolve(s, g, m, du, meanRadius, patch))
+        if (dt > 0.0 && !evolve(s, g, m, du, meanRadius, patch, loads))
         {
             s.broken = true;
             return loads;
@@ -142,9 +145,10 @@ struct BondLaw
 
 private:
     //- One step of the state: returns false when the bond breaks. patch: the section at the
-    //- start of the step, on return the section at its end.
+    //- start of the step, on return the section at its end; loads: its creep of the step.
     DEM_HD bool evolve(BondState& s, const BondGeometry& g, const BondMotion& m,
-                       const PatchIncrement& du, double meanRadius, PatchSection& patch) const
+                       const PatchIncrement& du, double meanRadius, PatchSection& patch,
+                       BondLoads& loads) const
     {
         const Vector3d& n = g.normal;
         // 1. Stored in-plane loads into the current plane, turning with the pair's mean rotation.
@@ -174,10 +178,15 @@ private:
         // division all the same.)
         if (creeps && kn > 0.0)
         {
-            s.creepNormal += std::fabs(elasticN - s.normalForce) / kn;
-            s.creepShear += (elasticS - s.shearForce).norm() / ks;
-            s.creepTwist += std::fabs(elasticMt - s.twistMoment) / kt;
-            s.creepBend += (elasticMb - s.bendMoment).norm() / kb;
+            const double normalCreep = (elasticN - s.normalForce) / kn;
+            const Vector3d shearCreep = (elasticS - s.shearForce) / ks;
+            const double twistCreep = (elasticMt - s.twistMoment) / kt;
+            const Vector3d bendCreep = (elasticMb - s.bendMoment) / kb;
+            s.creepNormal += std::fabs(normalCreep);
+            s.creepShear += shearCreep.norm();
+            s.creepTwist += std::fabs(twistCreep);
+            s.creepBend += bendCreep.norm();
+            loads.creepShift = normalCreep * n + shearCreep;
         }
 
         // 3. Sintering grows an intact patch under compression (new material, no load).
