@@ -2,11 +2,11 @@
 // Where a bond sits with BondPoint::bodyFixedPatches, through dem::System on both backends
 // (kernels/bonds/BondGeometry.h): the bond's patch centre is held in each grain's body frame,
 // its point is the midpoint of the two copies, and creep moves the copies towards each other
-// (Johnson & Hopkins 2005); the normal runs between the cores at that point. Closed forms: two nearly parallel capsules turned
-// through parallel keep their bond where it froze (the cores' closest points jumped by half
-// the shared stretch at any tilt); under shear creep the copies end the elastic displacement
-// apart, each moved by half the creep; a bonded sphere's patch turns with it; a state written
-// before the patches is placed at import.
+// (Johnson & Hopkins 2005); the normal runs between the cores at that point. Closed forms:
+// two nearly parallel capsules turned through parallel keep their bond where it froze (the
+// cores' closest points jumped by half the shared stretch at any tilt); under shear creep the
+// copies end the elastic displacement apart, each moved by half the creep; a bonded sphere's
+// patch turns with it; a state written before the patches is placed at import.
 #include "CapsuleTestSupport.h"
 
 #include <algorithm>

@@ -1,17 +1,17 @@
 // BondGeometry.h
-// Where a bond sits. A bond's contact patch is held in each grain's body frame (Johnson &
-// Hopkins 2005: "the locations of the frozen-contact planes are stored in the body coordinate
-// frame of each particle and move with them"): per grain the patch's centre (minus the grain's
-// centre), rotated into the global frame with the grain's orientation. The bond's contact point
-// is the midpoint of the two copies; relative motion moves them apart, creep moves them back
-// towards each other (creptPatches: the paper's "creep acts by bringing the circular contact
-// patches into alignment"). So two nearly parallel capsules keep their bond where it froze,
-// whatever the tilt. The patch plane is not held: its normal runs between the two cores at the
-// bond's point (patchGeometry), because with the incremental loads of BondLaw.h a normal held
-// in the body frames let creeping bonded grains slide into each other unresisted (the snow
-// preparation burst: doc/EQUATIONS.md section 10). The loads themselves are the bond law's. A bond
-// is placed when it is made (formed, added, or imported from a state written before the patches)
-// where the grains' contact law puts their contact (bondPlacement, PlaceBonds). Host and device.
+// Where a bond sits, two models (BondPoint). closestPoints: the cores' closest points, taken
+// afresh every step (bondGeometry). bodyFixedPatches (Johnson & Hopkins 2005: "the locations of
+// the frozen-contact planes are stored in the body coordinate frame of each particle and move
+// with them"): per grain the patch's centre (minus the grain's centre) in its body frame,
+// rotated into the global frame with the grain's orientation; the bond's point is the midpoint
+// of the two copies; relative motion moves them apart, creep moves them back towards each other
+// (creptPatches: the paper's "creep acts by bringing the circular contact patches into
+// alignment"). So two nearly parallel capsules keep their bond where it froze, whatever the
+// tilt. The patch plane is not held: its normal runs between the two cores at the bond's point
+// (patchGeometry), so that the bond's normal load acts across the grains as they are. The
+// loads themselves are the bond law's (BondLaw.h). A bond is placed when it is made (formed,
+// added, or imported from a state written before the patches) where the grains' contact law
+// puts their contact (bondPlacement, PlaceBonds). Host and device.
 #pragma once
 
 #include "backends/HostDevice.h"
