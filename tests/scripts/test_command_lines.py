@@ -73,6 +73,15 @@ def test_missing_folder_is_one_line(script, folder, tmp_path):
         assert os.listdir(tmp_path / "empty") == []
 
 
+def copy_study(tmp_path, solver, tutorial, name="study"):
+    """The tutorial's case files as tmp_path/name, without anything a run
+    left there; returns that folder."""
+    study = tmp_path / name
+    shutil.copytree(os.path.join(PROJECT, "tutorials", solver, tutorial), study,
+                    ignore=shutil.ignore_patterns("stages", "*.png", "results*.json", "log.*"))
+    return study
+
+
 @pytest.mark.parametrize("option, message", [
     ("--weak-bonds", "settlementStudy: --weak-bonds 0: the scale must be > 0"),
     ("--strength-scale", "settlementStudy: --strength-scale 0: the scale must be > 0"),
@@ -82,9 +91,7 @@ def test_settlement_scales_must_be_positive(tmp_path, option, message):
     """settlementStudy --weak-bonds 0 or --strength-scale 0 (a bond strength of
     zero) or --preparation-viscosity 0 (bonds without viscosity): one line
     naming the option, before any folder is looked at or made."""
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement"),
-                    tmp_path / "study", ignore=shutil.ignore_patterns(
-                        "stages", "*.png", "results.json", "log.*"))
+    copy_study(tmp_path, "demFoam", "snowSettlement")
     r = run(["settlementStudy", "study", option, "0"], tmp_path)
     print(r.stderr)
     assert r.returncode != 0 and "Traceback" not in r.stderr
@@ -95,9 +102,7 @@ def test_settlement_scales_must_be_positive(tmp_path, option, message):
 def test_settlement_bond_point_names_the_valid_ones(tmp_path):
     """settlementStudy --bond-point sticky: refused naming both valid models,
     before any folder is made."""
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "demFoam", "snowSettlement"),
-                    tmp_path / "study", ignore=shutil.ignore_patterns(
-                        "stages", "*.png", "results.json", "log.*"))
+    copy_study(tmp_path, "demFoam", "snowSettlement")
     r = run(["settlementStudy", "study", "--bond-point", "sticky"], tmp_path)
     print(r.stderr)
     assert r.returncode != 0 and "Traceback" not in r.stderr
@@ -109,9 +114,7 @@ def test_settlement_bond_point_names_the_valid_ones(tmp_path):
 def test_shear_jobs_must_be_positive(tmp_path):
     """shearStudy --jobs 0 (no shear stage could run): one line naming the
     option, before any folder is looked at or made."""
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", "shear"),
-                    tmp_path / "study", ignore=shutil.ignore_patterns(
-                        "stages", "*.png", "results*.json", "log.*"))
+    copy_study(tmp_path, "darcyDemFoam", "shear")
     r = run(["shearStudy", "study", "--jobs", "0"], tmp_path)
     print(r.stderr)
     assert r.returncode != 0 and "Traceback" not in r.stderr
@@ -162,9 +165,7 @@ def test_study_stage_line_reaches_a_pipe_at_once(tmp_path):
     if missing:
         pytest.skip("not on PATH: " + " ".join(missing) + " (source etc/bashrc after"
                     " ./Allwmake, or the bashrc of a built checkout)")
-    study = tmp_path / "shear"
-    shutil.copytree(os.path.join(PROJECT, "tutorials", "darcyDemFoam", "shear"), study,
-                    ignore=shutil.ignore_patterns("stages", "*.png", "results*.json", "log.*"))
+    study = copy_study(tmp_path, "darcyDemFoam", "shear", "shear")
     env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
     p = subprocess.Popen([os.path.join(BIN, "shearStudy"), "--size", "test", str(study)],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env,
