@@ -29,14 +29,7 @@ const double area = M_PI * rb * rb, bendI = M_PI * std::pow(rb, 4) / 4.0;
 
 dem::Parameters patchParameters(dem::Parameters p)
 {
-    p.grainGrain = {1e4, 1e4, 0.0, 0.0, 0.5}; // unbonded contacts: never used here
-    p.grainWall = p.grainGrain;
-    p.boxLower = {-0.02, -0.02};
-    p.boxUpper = {0.02, 0.02};
-    p.timeStep = 1e-6;
-    p.bonds.enabled = true;
-    p.bonds.youngsModulus = E;
-    p.bonds.shearToNormalStiffness = 0.6;
+    p = iceBondPairParameters(p, E);
     p.bonds.point = dem::BondPoint::bodyFixedPatches;
     return p;
 }

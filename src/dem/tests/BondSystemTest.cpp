@@ -31,15 +31,7 @@ const double kne = E / (2.0 * R), kse = 0.6 * kne;
 
 dem::Parameters bondedParameters(dem::Parameters p)
 {
-    p.grainGrain = {1e4, 1e4, 0.0, 0.0, 0.5}; // unbonded contacts: soft, never used here
-    p.grainWall = p.grainGrain;
-    p.boxLower = {-0.02, -0.02};
-    p.boxUpper = {0.02, 0.02};
-    p.timeStep = 1e-6;
-    p.bonds.enabled = true;
-    p.bonds.youngsModulus = E;
-    p.bonds.shearToNormalStiffness = 0.6;
-    return p;
+    return iceBondPairParameters(p, E);
 }
 
 //- Capsule A (fixed) at the origin and capsule B (driven) to its +x, both along x.

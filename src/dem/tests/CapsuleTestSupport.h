@@ -38,6 +38,22 @@ inline Eigen::Vector3d halfAxisOf(const dem::GrainData& g, std::size_t i)
     return g.coreHalfLength[i] * (orientationOf(g, i) * Eigen::Vector3d::UnitZ());
 }
 
+//- A bonded pair's test system (BondSystemTest, BondPatchTest): soft unbonded contacts (never
+//- used: the pair is bonded), a 4 cm box about the origin, dt 1e-6 s, bonds of Young's
+//- modulus E with k_se/k_ne = 0.6.
+inline dem::Parameters iceBondPairParameters(dem::Parameters p, double E)
+{
+    p.grainGrain = {1e4, 1e4, 0.0, 0.0, 0.5};
+    p.grainWall = p.grainGrain;
+    p.boxLower = {-0.02, -0.02};
+    p.boxUpper = {0.02, 0.02};
+    p.timeStep = 1e-6;
+    p.bonds.enabled = true;
+    p.bonds.youngsModulus = E;
+    p.bonds.shearToNormalStiffness = 0.6;
+    return p;
+}
+
 //- Capsule of radius r, core half-length h, density rho: mass and principal moments
 //- (I_perp, I_axial); cylinder m_c = rho pi r^2 L and hemispheres m_h = rho 4/3 pi r^3, L = 2h.
 struct CapsuleBody

@@ -31,8 +31,9 @@ void EngineImpl<Exec>::indexBonds()
     Exec::forEach(n, InvertIds{grains_.integer(fId), thrust::raw_pointer_cast(internalOf_.data())});
     bonds_.index(exec_.policy(), internalOf_, n);
     // Bonds just made (formed, added, imported without patches) get their patches where their
-    // grains touch now, at the packed state.
-    Exec::forEach(bonds_.count(), PlaceBonds{grains_.view(), bonds_.view(), boxView()});
+    // grains touch now, at the packed state (the body-fixed model alone reads them).
+    if (bodyFixedPatches())
+        Exec::forEach(bonds_.count(), PlaceBonds{grains_.view(), bonds_.view(), boxView()});
     // The pairs' flags, when the list is the current grains' (else the next rebuild sets them).
     if (grainsAtLastBuild_ == n && long(pairs_.start.size()) == long(n) + 1)
     {
@@ -147,8 +148,9 @@ void EngineImpl<Exec>::addBonds(const std::vector<BondInit>& added)
         state[kBondOnsetRadius * m + old + k] = bond.patchRadius;
     }
     bonds_.assign(first, second, state);
-    // The new bonds are placed at the packed state (PlaceBonds): packed from the grains now.
-    Exec::forEach(n, PackGrains{grains_.view()});
+    // Body-fixed patches are placed at the packed state (PlaceBonds): packed from the grains now.
+    if (bodyFixedPatches())
+        Exec::forEach(n, PackGrains{grains_.view()});
     indexBonds();
 }
 
@@ -203,9 +205,9 @@ BondData EngineImpl<Exec>::bonds() const
     EngineImpl& e = self();
     bondReadback_.resize(7 * std::size_t(count));
     double* scratch = thrust::raw_pointer_cast(bondReadback_.data());
-    Exec::forEach(count, BondReadback{e.grains_.view(), e.bonds_.view(), boxView(), scratch,
-                                      scratch + 3L * count, scratch + 6L * count,
-                                      params_.bonds.point == BondPoint::bodyFixedPatches});
+    Exec::forEach(count,
+                  BondReadback{e.grains_.view(), e.bonds_.view(), boxView(), scratch,
+                               scratch + 3L * count, scratch + 6L * count, bodyFixedPatches()});
     std::vector<double> geometry(bondReadback_.size());
     thrust::copy(bondReadback_.begin(), bondReadback_.end(), geometry.begin());
     const std::vector<double> state = bonds_.hostState();

@@ -232,6 +232,11 @@ private:
     //- Whether the ghosts' step state includes their orientation: capsules (their cores), and
     //- spheres with bonds (the patches turn with the grains).
     bool ghostsTurn() const { return grains_.hasCapsules() || params_.bonds.enabled; }
+    //- Bonds sit on patches held in the grains' body frames (BondPoint::bodyFixedPatches).
+    bool bodyFixedPatches() const
+    {
+        return params_.bonds.enabled && params_.bonds.point == BondPoint::bodyFixedPatches;
+    }
     //- The decomposed part of exportState / importState (restart on the same decomposition).
     void exportHalo(SystemState& s) const;
     void importHalo(const SystemState& s);

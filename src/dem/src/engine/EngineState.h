@@ -309,7 +309,8 @@ void EngineImpl<Exec>::importBonds(const SystemState& s)
     }
     bonds_.assign(first, second, state);
     // A state written before the patches: its bonds are placed at the packed state.
-    Exec::forEach(grains_.size(), PackGrains{grains_.view()});
+    if (bodyFixedPatches())
+        Exec::forEach(grains_.size(), PackGrains{grains_.view()});
     indexBonds(); // the order they had: a function of the grain order, restored above
 }
 

@@ -163,14 +163,22 @@ struct BondForceKernel
         const Vector3d xi(xr[4 * i], xr[4 * i + 1], xr[4 * i + 2]);
         const Vector3d xj(xr[4 * j], xr[4 * j + 1], xr[4 * j + 2]);
         const Vector3d d = box.separation(xi, xj);
-        const Quaterniond qA = g.orientationOf(i), qB = g.orientationOf(j);
+        // The orientations and patches are read by the body-fixed model only.
         const bool bodyFixed = law.p.point == BondPoint::bodyFixedPatches;
-        const BondPatches patches = bonds.loadPatches(b);
-        const BondGeometry geometry =
-            bodyFixed ? patchGeometry(patches, d, qA, qB, g.packedHalfAxisOf(i),
-                                      g.packedHalfAxisOf(j), xr[4 * i + 3], xr[4 * j + 3])
-                      : bondGeometry(d, g.packedHalfAxisOf(i), g.packedHalfAxisOf(j), xr[4 * i + 3],
-                                     xr[4 * j + 3]);
+        Quaterniond qA, qB;
+        BondPatches patches;
+        BondGeometry geometry;
+        if (bodyFixed)
+        {
+            qA = g.orientationOf(i);
+            qB = g.orientationOf(j);
+            patches = bonds.loadPatches(b);
+            geometry = patchGeometry(patches, d, qA, qB, g.packedHalfAxisOf(i),
+                                     g.packedHalfAxisOf(j), xr[4 * i + 3], xr[4 * j + 3]);
+        }
+        else
+            geometry = bondGeometry(d, g.packedHalfAxisOf(i), g.packedHalfAxisOf(j), xr[4 * i + 3],
+                                    xr[4 * j + 3]);
         BondMotion motion;
         motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
         motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
@@ -469,9 +477,7 @@ struct FormBonds
         BondState st;
         st.patchRadius = std::sqrt(f) * rMin;
         st.onsetRadius = st.patchRadius;
-        bonds.store(b, st);
-        // Not placed yet: PlaceBonds places it where the grains touch now.
-        bonds.storePatches(b, BondPatches{Vector3d::Zero(), Vector3d::Zero()});
+        bonds.store(b, st); // its patches: zero from the store's growth, not placed yet
     }
 };
 
