@@ -139,8 +139,21 @@ void checkParameters(const Parameters& p)
     require(p.threads >= 0, "threads", p.threads, ">= 0 (0: OpenMP default)");
     require(p.maxPairsPerGrain >= 0, "maxPairsPerGrain", p.maxPairsPerGrain, ">= 0 (0: grow)");
     for (int d = 0; d < 2; ++d)
+    {
         require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
                 p.boxUpper[d], "> boxLower");
+        const char* rate = d == 0 ? "boxLengthRate[0]" : "boxLengthRate[1]";
+        require(std::isfinite(p.boxLengthRate[d]), rate, p.boxLengthRate[d], "finite");
+        if (p.boxLengthRate[d] != 0.0)
+        {
+            require(p.periodic[d], rate, p.boxLengthRate[d],
+                    "0 on a side that is not periodic (Parameters::periodic)");
+            require(p.decomposition.rankCount() == 1, rate, p.boxLengthRate[d],
+                    "0 with a decomposition over MPI ranks (a deforming box runs on one "
+                    "process)");
+        }
+    }
+    require(std::isfinite(p.boxTime), "boxTime", p.boxTime, "finite");
     checkBondStore(p.bonds);
     checkBondLaw(p.bonds);
     for (int d = 0; d < 2; ++d)

@@ -184,7 +184,14 @@ struct Parameters
     std::array<double, 2> boxLower{0.0, 0.0};
     std::array<double, 2> boxUpper{1.0, 1.0};
     std::array<bool, 2> periodic{true, true}; //!< periodic in x and y
-    double timeStep = 1e-7;                   //!< DEM step [s]
+    //- A periodic side's length changes at this constant rate [m/s] (0: a fixed box; periodic
+    //- sides only, one process): the upper side moves, so that the length at System time t is
+    //- boxUpper - boxLower + boxLengthRate (t - boxTime). Space contracts (< 0) or stretches
+    //- as in a deforming periodic cell: each grain meets its neighbours' images across the side
+    //- moving with their own velocity plus the rate per image (src/dem/README.md).
+    std::array<double, 2> boxLengthRate{0.0, 0.0};
+    double boxTime = 0.0;       //!< System time at which boxLower..boxUpper is the box [s]
+    double timeStep = 1e-7;     //!< DEM step [s]
     double neighbourSkin = 0.0; //!< Verlet skin [m]; rebuild when a grain moved skin/2
     //- Refuse timeStep > maxTimeStepFraction * sqrt(m_min / k_max) (see criticalTimeStep()).
     double maxTimeStepFraction = 0.2;

@@ -128,9 +128,13 @@ public:
         moved2 = globalMax(moved2); // all ranks rebuild together
         stopIfNotFinite(moved2);
         wallsKickDrift(dt);
+        positionsTime_ = time_ + dt;
         for (int s = 0; s < nSteps; ++s)
         {
-            if (needRebuild_ || moved2 > halfSkin * halfSkin)
+            // A pair across a deforming periodic side also comes closer by the box's change
+            // since the last rebuild (0 in a fixed box: the plain skin/2 test)
+            const double reach = halfSkin - 0.5 * boxChangeSinceBuild();
+            if (needRebuild_ || reach < 0.0 || moved2 > reach * reach)
             {
                 Exec::forEach(grains_.size(), UnpackGrains{grains_.view()});
                 rebuild();
@@ -147,6 +151,7 @@ public:
             if (!last)
                 wallsKickDrift(dt);
             time_ += dt;
+            positionsTime_ = last ? time_ : time_ + dt;
             ++steps_;
         }
         if (halo_) // the ghosts' fields as their owners' at the end of the call (read-backs)
@@ -259,16 +264,30 @@ private:
         return wall;
     }
 
+    //- The box at the time of the grains' positions (a deforming side's length changes).
     BoxView boxView() const
     {
         BoxView b;
         for (int d = 0; d < 2; ++d)
         {
             b.lower[d] = params_.boxLower[d];
-            b.length[d] = params_.boxUpper[d] - params_.boxLower[d];
+            b.length[d] = currentBoxLength(d);
+            b.lengthRate[d] = params_.boxLengthRate[d];
             b.periodic[d] = params_.periodic[d];
         }
         return b;
+    }
+    //- Parameters::boxLengthRate: the length at the positions' time (exactly boxLength(d) in a
+    //- fixed box).
+    double currentBoxLength(int d) const
+    {
+        return boxLength(d) + params_.boxLengthRate[d] * (positionsTime_ - params_.boxTime);
+    }
+    //- How far the box's lengths moved since the last rebuild (the Verlet test's share).
+    double boxChangeSinceBuild() const
+    {
+        const double rx = params_.boxLengthRate[0], ry = params_.boxLengthRate[1];
+        return std::sqrt(rx * rx + ry * ry) * std::abs(positionsTime_ - positionsTimeAtBuild_);
     }
 
     //- The contact-law family: calls f(law, frictionlessLaw) with the evaluators of material
@@ -593,6 +612,8 @@ private:
     int grainsAtLastBuild_ = 0;
     std::size_t rebuilds_ = 0;
     double time_ = 0.0;
+    double positionsTime_ = 0.0; //!< time of the grains' positions (time_ + dt inside step())
+    double positionsTimeAtBuild_ = 0.0; //!< positionsTime_ at the last rebuild
     long long steps_ = 0;
 };
 

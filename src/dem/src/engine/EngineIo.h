@@ -327,18 +327,21 @@ GrainData EngineImpl<Exec>::grains() const
         out.flag[u] = GrainFlag(flag[i]);
         for (int d = 0; d < 3; ++d)
         {
-            const double shift =
-                d < 2 ? image[std::size_t(d) * n + i] * (params_.boxUpper[d] - params_.boxLower[d])
-                      : 0.0;
+            // the lattice of images at the current length (a deforming side's scale with it)
+            const double shift = d < 2 ? image[std::size_t(d) * n + i] * currentBoxLength(d) : 0.0;
             out.displacement[3 * u + d] = out.position[3 * u + d] + shift - origin[3 * u + d];
         }
         // Inside the box also between rebuilds (a grain may have crossed a seam since)
         for (int d = 0; d < 2; ++d)
         {
-            const double lower = params_.boxLower[d], length = params_.boxUpper[d] - lower;
+            const double lower = params_.boxLower[d], length = currentBoxLength(d);
             double& x = out.position[3 * u + d];
             if (params_.periodic[d] && (x < lower || x >= lower + length))
-                x -= length * std::floor((x - lower) / length);
+            {
+                const double crossed = std::floor((x - lower) / length);
+                x -= length * crossed;
+                out.velocity[3 * u + d] -= crossed * params_.boxLengthRate[d]; // WrapIntoBox
+            }
         }
     }
     return out;

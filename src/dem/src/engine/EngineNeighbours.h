@@ -107,7 +107,9 @@ void EngineImpl<Exec>::rebuild()
     // The grid before the wrap: its bounds on the non-periodic sides do not change with it,
     // and a blown-up step is caught before image counts overflow (see cellGrid).
     CellGridView cells = cellGrid();
-    Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.integer(fImage), box, n});
+    Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.vec3(fVelocity),
+                                 grains_.integer(fImage), box, n});
+    positionsTimeAtBuild_ = positionsTime_;
 
     // Sort by cell: grains of a cell become contiguous and neighbours close in memory.
     const int cellCount = cells.n[0] * cells.n[1] * cells.n[2];

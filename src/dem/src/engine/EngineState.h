@@ -236,6 +236,7 @@ void EngineImpl<Exec>::importState(const SystemState& s)
     if (clock.size() != 3)
         throw Error("importState: 'clock' must have 3 entries");
     time_ = clock[0];
+    positionsTime_ = time_;
     params_.timeStep = clock[1];
     params_.viscousDrag = clock[2];
     steps_ = counters[0];

@@ -106,9 +106,14 @@ struct CellGridView
 };
 
 //- Wrap positions into the periodic box, counting the images crossed (for displacements).
+//- Across a deforming side (BoxView::lengthRate) the image one box length away moves with
+//- the rate: a grain that crosses takes its image's velocity (v - shift rate), so that its
+//- neighbours on the other side see it as before (a deforming periodic cell's velocity field,
+//- v(x + L) = v(x) + dL/dt).
 struct WrapIntoBox
 {
     Vec3Array position;
+    Vec3Array velocity;
     int* image; //!< 2 components (x, y)
     BoxView box;
     int n;
@@ -124,6 +129,7 @@ struct WrapIntoBox
             if (shift != 0.0)
             {
                 x -= shift * box.length[d];
+                velocity.data[i + d * velocity.stride] -= shift * box.lengthRate[d];
                 image[i + d * n] += int(shift);
             }
         }

@@ -339,9 +339,11 @@ struct PairForceKernel
         const long r0 = r * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* out = pairs.reaction;
         Vector3d history = load(h, 0, hs);
-        const ContactLoads loads = sphereContact(
-            law, n, overlap, ri, rj, load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4),
-            load(vw, 8 * j + 4), history, ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
+        // j's image across a deforming periodic side moves with it (zero in a fixed box)
+        const Vector3d vj = load(vw, 8 * j) + box.imageVelocity(load(xr, 4 * i), load(xr, 4 * j));
+        const ContactLoads loads = sphereContact(law, n, overlap, ri, rj, load(vw, 8 * i), vj,
+                                                 load(vw, 8 * i + 4), load(vw, 8 * j + 4), history,
+                                                 ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
         // Select, then store unconditionally (conditional stores would not vectorise).
         double value[3 * kHistoryVectors + kReactionComponents];
         for (int c = 0; c < 3; ++c)
@@ -379,10 +381,11 @@ struct PairForceKernel
         const long r0 = r * pairs.reactionPairStride;
         double* out = pairs.reaction;
         Vector3d history = load(h, 0, hs);
+        const Vector3d vj = load(vw, 8 * j) + box.imageVelocity(load(xr, 4 * i), load(xr, 4 * j));
         const PointContactLoads loads =
             pointContact(law, geometry.normal, geometry.overlap, geometry.offsetI, geometry.offsetJ,
-                         load(vw, 8 * i), load(vw, 8 * j), load(vw, 8 * i + 4), load(vw, 8 * j + 4),
-                         history, ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
+                         load(vw, 8 * i), vj, load(vw, 8 * i + 4), load(vw, 8 * j + 4), history,
+                         ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
         double value[3 * kHistoryVectors + kReactionComponents];
         for (int c = 0; c < 3; ++c)
         {

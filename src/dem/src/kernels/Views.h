@@ -211,11 +211,13 @@ struct PairView
     }
 };
 
-//- Periodic box in x and y; z is never periodic.
+//- Periodic box in x and y; z is never periodic. A periodic side may change its length at
+//- lengthRate (Parameters::boxLengthRate): the box is the one at the time of the positions.
 struct BoxView
 {
     double lower[3] = {0, 0, 0};
     double length[3] = {1, 1, 1};
+    double lengthRate[3] = {0, 0, 0};
     bool periodic[3] = {false, false, false};
 
     DEM_HD double minimumImage(double d, int dim) const
@@ -233,6 +235,20 @@ struct BoxView
     {
         return Vector3d(minimumImage(to.x() - from.x(), 0), minimumImage(to.y() - from.y(), 1),
                         to.z() - from.z());
+    }
+    //- The image of the grain at `to` that separation() takes moves with that grain's velocity
+    //- plus this: -lengthRate across the upper side, +lengthRate across the lower (the image
+    //- is one box length away, and the length changes). Zero in a fixed box.
+    DEM_HD double imageVelocity(double d, int dim) const
+    {
+        const double half = 0.5 * length[dim];
+        const double rate = periodic[dim] ? lengthRate[dim] : 0.0;
+        return d > half ? -rate : (d < -half ? rate : 0.0);
+    }
+    DEM_HD Vector3d imageVelocity(const Vector3d& from, const Vector3d& to) const
+    {
+        return Vector3d(imageVelocity(to.x() - from.x(), 0), imageVelocity(to.y() - from.y(), 1),
+                        0.0);
     }
 };
 

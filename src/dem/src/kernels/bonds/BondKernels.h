@@ -181,7 +181,8 @@ struct BondForceKernel
                                     xr[4 * j + 3]);
         BondMotion motion;
         motion.velocityA = Vector3d(vw[8 * i], vw[8 * i + 1], vw[8 * i + 2]);
-        motion.velocityB = Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]);
+        motion.velocityB =
+            Vector3d(vw[8 * j], vw[8 * j + 1], vw[8 * j + 2]) + box.imageVelocity(xi, xj);
         motion.omegaA = Vector3d(vw[8 * i + 4], vw[8 * i + 5], vw[8 * i + 6]);
         motion.omegaB = Vector3d(vw[8 * j + 4], vw[8 * j + 5], vw[8 * j + 6]);
         motion.inverseMassA = vw[8 * i + 3];
