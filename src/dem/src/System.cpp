@@ -127,21 +127,10 @@ void checkBondLaw(const BondParameters& b)
     }
 }
 
-void checkParameters(const Parameters& p)
+void checkBoxLengthRate(const Parameters& p)
 {
-    checkMaterial(p.grainGrain, "grainGrain");
-    checkMaterial(p.grainWall, "grainWall");
-    require(p.timeStep > 0, "timeStep", p.timeStep, "> 0");
-    require(p.neighbourSkin >= 0, "neighbourSkin", p.neighbourSkin, ">= 0");
-    require(p.maxTimeStepFraction > 0, "maxTimeStepFraction", p.maxTimeStepFraction, "> 0");
-    require(p.defaultDensity > 0, "defaultDensity", p.defaultDensity, "> 0");
-    require(p.viscousDrag >= 0, "viscousDrag", p.viscousDrag, ">= 0");
-    require(p.threads >= 0, "threads", p.threads, ">= 0 (0: OpenMP default)");
-    require(p.maxPairsPerGrain >= 0, "maxPairsPerGrain", p.maxPairsPerGrain, ">= 0 (0: grow)");
     for (int d = 0; d < 2; ++d)
     {
-        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
-                p.boxUpper[d], "> boxLower");
         const char* rate = d == 0 ? "boxLengthRate[0]" : "boxLengthRate[1]";
         require(std::isfinite(p.boxLengthRate[d]), rate, p.boxLengthRate[d], "finite");
         if (p.boxLengthRate[d] != 0.0)
@@ -154,6 +143,23 @@ void checkParameters(const Parameters& p)
         }
     }
     require(std::isfinite(p.boxTime), "boxTime", p.boxTime, "finite");
+}
+
+void checkParameters(const Parameters& p)
+{
+    checkMaterial(p.grainGrain, "grainGrain");
+    checkMaterial(p.grainWall, "grainWall");
+    require(p.timeStep > 0, "timeStep", p.timeStep, "> 0");
+    require(p.neighbourSkin >= 0, "neighbourSkin", p.neighbourSkin, ">= 0");
+    require(p.maxTimeStepFraction > 0, "maxTimeStepFraction", p.maxTimeStepFraction, "> 0");
+    require(p.defaultDensity > 0, "defaultDensity", p.defaultDensity, "> 0");
+    require(p.viscousDrag >= 0, "viscousDrag", p.viscousDrag, ">= 0");
+    require(p.threads >= 0, "threads", p.threads, ">= 0 (0: OpenMP default)");
+    require(p.maxPairsPerGrain >= 0, "maxPairsPerGrain", p.maxPairsPerGrain, ">= 0 (0: grow)");
+    for (int d = 0; d < 2; ++d)
+        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
+                p.boxUpper[d], "> boxLower");
+    checkBoxLengthRate(p);
     checkBondStore(p.bonds);
     checkBondLaw(p.bonds);
     for (int d = 0; d < 2; ++d)
@@ -291,6 +297,21 @@ void System::setViscousDrag(double drag)
     require(drag >= 0, "viscousDrag", drag, ">= 0");
     impl_->parameters.viscousDrag = drag;
     impl_->engine->setViscousDrag(drag);
+}
+
+void System::setBoxLengthRate(const std::array<double, 2>& rate)
+{
+    Parameters p = impl_->parameters;
+    p.boxLengthRate = rate;
+    checkBoxLengthRate(p);
+    impl_->engine->setBoxLengthRate(rate);
+    impl_->parameters.boxUpper = impl_->engine->boxUpper();
+    impl_->parameters.boxTime = time();
+    impl_->parameters.boxLengthRate = rate;
+}
+std::array<double, 2> System::boxUpper() const
+{
+    return impl_->engine->boxUpper();
 }
 
 void System::setTimeStep(double dt)

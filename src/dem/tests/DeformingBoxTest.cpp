@@ -21,7 +21,7 @@ class DeformingBox : public BackendTest
 protected:
     static constexpr double kRadius = 0.01;
     static constexpr int kChain = 8;
-    static constexpr double kSpacing = 0.0199; // overlap 1e-4 m between neighbours
+    static constexpr double kSpacing = 0.0199;  // overlap 1e-4 m between neighbours
     static constexpr double kStrainRate = -2.0; // [1/s] along y, box and grains alike
 
     //- A chain of spheres along y that fills the periodic length, each on the homogeneous
@@ -107,8 +107,8 @@ void DeformingBox::affineContraction(double coreHalfLength)
     const double length = p.boxUpper[1] + p.boxLengthRate[1] * s.time();
     std::printf("  %s: box y length %.6f -> %.6f m; worst net force / spring force %.1e, velocity "
                 "change %.1e m/s, displacement error %.1e m; %zu rebuilds\n",
-                coreHalfLength > 0 ? "capsules" : "spheres", p.boxUpper[1], length, worstNet, worstVelocity, worstDisplacement,
-                s.neighbourRebuildCount());
+                coreHalfLength > 0 ? "capsules" : "spheres", p.boxUpper[1], length, worstNet,
+                worstVelocity, worstDisplacement, s.neighbourRebuildCount());
     // Round-off: positions summed over 1e4 drifts of 3.4e-6 m against the box's closed form
     // L0 + rate t differ by 1e-17 m a step, 1e-13 m at worst: k_n 1e-13 m = 1e-9 of the spring
     // force, which over 2 ms changes a grain's velocity by 2e-8 m/s.
@@ -181,6 +181,28 @@ TEST_P(DeformingBox, ShrinkingBoxBringsGrainsAtRestIntoContact)
     EXPECT_NEAR(va, u, 10.0 * p.timeStep / contactTime * u);
     EXPECT_NEAR(vb, -u, 10.0 * p.timeStep / contactTime * u);
     EXPECT_NEAR(g.velocity[0] + g.velocity[2] + g.velocity[3] + g.velocity[5], 0.0, 1e-15);
+}
+
+// setBoxLengthRate starts (and stops) the change from the box as it is: the length follows
+// L0 + rate (t - t_set) and stays where it was when the rate is set to zero.
+TEST_P(DeformingBox, RateSetDuringTheRunStartsFromTheBoxAsItIs)
+{
+    dem::Parameters p = chainParameters();
+    p.boxLengthRate = {0.0, 0.0};
+    dem::System s(p);
+    s.addGrains(chain());
+    s.step(1000);
+    const double rate = chainParameters().boxLengthRate[1];
+    const double set = s.time();
+    s.setBoxLengthRate({0.0, rate});
+    s.step(2000);
+    EXPECT_NEAR(s.boxUpper()[1], p.boxUpper[1] + rate * (s.time() - set), 1e-15);
+    EXPECT_EQ(s.boxUpper()[0], p.boxUpper[0]);
+    EXPECT_EQ(s.parameters().boxTime, set);
+    const double stopped = s.boxUpper()[1];
+    s.setBoxLengthRate({0.0, 0.0});
+    s.step(1000);
+    EXPECT_EQ(s.boxUpper()[1], stopped);
 }
 
 // Refused: a rate on a side that is not periodic, and with a decomposition over MPI ranks.

@@ -77,6 +77,11 @@ public:
     void addBonds(const std::vector<BondInit>& bonds);
     //- Change the time step (checked against the critical step at the next step()).
     void setTimeStep(double dt);
+    //- From now on the periodic lengths change at `rate` [m/s] (Parameters::boxLengthRate),
+    //- from the box as it is now (Parameters::boxTime becomes time()); {0, 0} stops them.
+    void setBoxLengthRate(const std::array<double, 2>& rate);
+    //- The box's upper corner in x and y now: boxLower + the lengths at time().
+    std::array<double, 2> boxUpper() const;
 
     // ---- running ------------------------------------------------------------------------
     //- Advance nSteps DEM steps (velocity Verlet). Throws if dt > maxTimeStepFraction * dt_crit.

@@ -55,6 +55,9 @@ public:
     //- (the critical time step); 0 without bonds.
     virtual double maximumBondStiffness() const { return 0.0; }
     virtual void setTimeStep(double dt) = 0;
+    //- Parameters::boxLengthRate from now on, from the current box (checked by System).
+    virtual void setBoxLengthRate(const std::array<double, 2>& rate) = 0;
+    virtual std::array<double, 2> boxUpper() const = 0;
     virtual void step(int nSteps) = 0;
 
     virtual std::size_t grainCount() const = 0;

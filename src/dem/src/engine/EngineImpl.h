@@ -107,6 +107,18 @@ public:
     void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
     double maximumBondStiffness() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
+    void setBoxLengthRate(const std::array<double, 2>& rate) override
+    {
+        params_.boxUpper = boxUpper();
+        params_.boxTime = positionsTime_;
+        params_.boxLengthRate = rate;
+        needRebuild_ = true; // the last list's skin did not count the change of rate
+    }
+    std::array<double, 2> boxUpper() const override
+    {
+        return {params_.boxLower[0] + currentBoxLength(0),
+                params_.boxLower[1] + currentBoxLength(1)};
+    }
 
     // ---- stepping -------------------------------------------------------------------------
     void step(int nSteps) override
