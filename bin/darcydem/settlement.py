@@ -222,7 +222,7 @@ class Run:
 class SettlementStudy:
     def __init__(self, study_dir, size="quick", log=say,
                  preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None,
-                 bond_point=None):
+                 bond_point=None, contract_y=False):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
@@ -242,13 +242,19 @@ class SettlementStudy:
         self.results["settings"]["preparationViscosity"] = preparation_viscosity
         self.results["settings"]["strengthScale"] = strength_scale
         self.results["settings"]["bondPoint"] = bond_point
+        # --contract-y: the periodic y length contracts with the walls (boxLengthRate)
+        self.contract_y = contract_y
+        self.results["settings"]["contractY"] = contract_y
 
     # ---- stages ---------------------------------------------------------------------------
-    def stage(self, name, state_from=None):
+    def stage(self, name, state_from=None, ly=None):
+        """The case of stage `name` on the loose box (its periodic length ly, default the
+        paper's), started from state_from (else 0/grains)."""
         c = Case(os.path.basename(self.dir), name, template_root=os.path.dirname(self.dir),
                  run_root=self.stages)
         block = "system/blockMeshDict"
-        lx, ly, lz = self.loose
+        lx, ly_paper, lz = self.loose
+        ly = ly_paper if ly is None else ly
         cell = 3e-3   # about a capsule's length
         for key, value in (("Lx", lx), ("Ly", ly), ("H", lz)):
             c.set_variable(block, key, "%.12g" % value)
@@ -289,17 +295,26 @@ class SettlementStudy:
             for wall, position in zip(("left", "right", "bottom", "lid"), self.final_walls()):
                 c.set(dem, f"walls/{wall}/position", "%.12g" % position)
 
+    @staticmethod
+    def run_time(end):
+        """The time a run to `end` lasts: whole fluid steps."""
+        fluid_dt = STEPS_PER_FLUID_STEP * TIME_STEP
+        return round(end / fluid_dt) * fluid_dt
+
     def controls(self, c, end, writes, rows=2000):
-        """endTime, write times and the function objects' rows (about `rows`)."""
+        """endTime, write times and the function objects' rows (about `rows`);
+        returns the last write time (the state the next stage starts from)."""
         ctl = "system/controlDict"
         fluid_dt = STEPS_PER_FLUID_STEP * TIME_STEP
         steps = round(end / fluid_dt)
+        every = max(1, steps // writes)
         c.set(ctl, "deltaT", "%.12g" % fluid_dt)
-        c.set(ctl, "endTime", "%.12g" % (steps * fluid_dt))
-        c.set(ctl, "writeInterval", max(1, steps // writes))
+        c.set(ctl, "endTime", "%.12g" % self.run_time(end))
+        c.set(ctl, "writeInterval", every)
         for fo in ("wallStress", "packingStatistics", "bondCreep"):
             c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
         c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
+        return (steps // every) * every * fluid_dt
 
     @staticmethod
     def contraction_time(rate):
@@ -311,24 +326,36 @@ class SettlementStudy:
         s = self.s
         dem = "constant/demProperties"
         lx, ly, lz = self.loose
-        a = self.stage(name)
+        # With --contract-y the periodic length shrinks from CONTRACTION ly to ly in the
+        # same time as the walls close, the grains' y velocities on its own field (no walls
+        # to sweep there: the field of the periodic cell, v(y + L) = v(y) + dL/dt)
+        ly_start = ly * CONTRACTION if self.contract_y else ly
+        a = self.stage(name, ly=ly_start)
         grain_rate = SWEEP * rate
-        subprocess.run([os.path.join(BIN, "makeGrains"), "--box", "%.12g" % lx, "%.12g" % ly,
+        y_rate = rate if self.contract_y else 0
+        subprocess.run([os.path.join(BIN, "makeGrains"), "--box", "%.12g" % lx,
+                        "%.12g" % ly_start,
                         "--z", "0", "%.12g" % lz, "--radius", str(RADIUS[0]), str(RADIUS[1]),
                         "--layout", "random", "--count", str(s["count"]),
                         "--capsule-fraction", "1", "--aspect", str(ASPECT[0]), str(ASPECT[1]),
                         "--periodic", "y", "--gap", "0.05",
-                        "--strain-rate", str(grain_rate), "0", str(grain_rate),
-                        "--strain-origin", "%.12g" % (lx / 2), "0", "%.12g" % (lz / 2),
+                        "--strain-rate", str(grain_rate), str(y_rate), str(grain_rate),
+                        "--strain-origin", "%.12g" % (lx / 2), "%.12g" % (ly_start / 2),
+                        "%.12g" % (lz / 2),
                         "--seed", str(s["seed"]), "-o", a.file("0/grains")],
                        check=True, stdout=subprocess.DEVNULL)
         self.set_walls(a, moving=True, rate=rate)
         a.set(dem, "gravity", "(0 0 0)")
         a.set(dem, "bonds/creep/contactViscosity", "%.12g" % viscosity)
         end = self.contraction_time(rate)
-        self.controls(a, end, 4, rows=400)
+        last_write = self.controls(a, end, 4, rows=400)
+        if self.contract_y:
+            # the paper's ly at the last write, the state the next stage starts from (its
+            # mesh, which that start checks the demState's box against)
+            a.set(dem, "boxLengthRate", "(0 %.17g 0)" % ((ly - ly_start) / last_write))
         self.timed_run(a, name, f"{s['count']} capsules contract by {CONTRACTION}"
-                       f" in x and z, contact viscosity {label(viscosity)}", end)
+                       f" in x, {'y, ' if self.contract_y else ''}z, contact viscosity"
+                       f" {label(viscosity)}", end)
         return a
 
     def prepare(self):
@@ -783,6 +810,9 @@ def main(argv):
     ap.add_argument("--bond-point", choices=("closestPoints", "bodyFixedPatches"),
                     help="where the bonds sit in every stage (doc/CASE-FORMAT.md, bonds point;"
                          " the template's: closestPoints)")
+    ap.add_argument("--contract-y", action="store_true",
+                    help="contract the periodic y length too (boxLengthRate), as the paper"
+                         " contracted all of space; else only x and z contract")
     ap.add_argument("--preparation-sweep", action="store_true",
                     help="only the contraction, at several contact viscosities and"
                          " strain rates: bonds frozen and broken (settlementPreparation.png)")
@@ -797,7 +827,8 @@ def main(argv):
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             preparation_viscosity=a.preparation_viscosity,
-                            strength_scale=a.strength_scale, bond_point=a.bond_point)
+                            strength_scale=a.strength_scale, bond_point=a.bond_point,
+                            contract_y=a.contract_y)
     if a.preparation_sweep:
         study.preparation_sweep()
         return

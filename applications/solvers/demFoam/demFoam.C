@@ -19,6 +19,7 @@ Description
 
 #include "fvCFD.H"
 #include "grainCoupling.H"
+#include "boxFollowingMesh.H"
 #include "latestCompleteTime.H"
 #include "stepTimers.H"
 #include "solverOptions.H"
@@ -99,6 +100,9 @@ int main(int argc, char *argv[])
         Us
     );
 
+    // A deforming periodic box ('boxLengthRate') stretches the mesh with it
+    boxFollowingMesh boxMotion(mesh, grains.cloud());
+
     // Wall clock of the loop by phase, as darcyDemFoam prints it (no fluid:
     // no pressure, gradient or exchange); the set-up above is left out
     stepTimers& timers = stepTimers::New(mesh);
@@ -116,6 +120,7 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         grains.advance();
+        boxMotion.update();
 
         if (runTime.writeTime())
         {

@@ -301,13 +301,21 @@ void System::setViscousDrag(double drag)
 
 void System::setBoxLengthRate(const std::array<double, 2>& rate)
 {
+    setBoxMotion(boxUpper(), time(), rate);
+}
+void System::setBoxMotion(const std::array<double, 2>& upper, double boxTime,
+                          const std::array<double, 2>& rate)
+{
     Parameters p = impl_->parameters;
+    p.boxUpper = upper;
+    p.boxTime = boxTime;
     p.boxLengthRate = rate;
+    for (int d = 0; d < 2; ++d)
+        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
+                p.boxUpper[d], "> boxLower");
     checkBoxLengthRate(p);
-    impl_->engine->setBoxLengthRate(rate);
-    impl_->parameters.boxUpper = impl_->engine->boxUpper();
-    impl_->parameters.boxTime = time();
-    impl_->parameters.boxLengthRate = rate;
+    impl_->engine->setBoxMotion(upper, boxTime, rate);
+    impl_->parameters = p;
 }
 std::array<double, 2> System::boxUpper() const
 {

@@ -60,6 +60,27 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             const demStart start(mesh.time(), settings_, grid_.grid(), *system_);
             topWall0_ = start.topWall0();
             displacement0_ = start.displacement0();
+            // The box deforms from the mesh's, from the start state's clock;
+            // a restart at the same rate continues the motion the run left
+            // (the written mesh is that box to round-off only)
+            if (settings_.deformingBox())
+            {
+                const vector& rate = settings_.boxLengthRate();
+                const std::vector<double>& m = start.boxMotion();
+                if (m.size() == 5 && m[3] == rate.x() && m[4] == rate.y())
+                {
+                    system_->setBoxMotion({m[0], m[1]}, m[2], {m[3], m[4]});
+                }
+                else
+                {
+                    system_->setBoxLengthRate({rate.x(), rate.y()});
+                }
+                grid_.followBox(system_->boxUpper());
+                Info<< "    periodic box: lengths change at " << rate
+                    << " m/s from x " << grid_.grid().n[0]*grid_.grid().spacing[0]
+                    << " m, y " << grid_.grid().n[1]*grid_.grid().spacing[1]
+                    << " m" << endl;
+            }
             settings_.checkTimeStep(*system_);
             Info<< "    backend " << system_->backendName() << ", "
                 << system_->threadCount() << " thread(s)";
@@ -186,6 +207,10 @@ Foam::label Foam::demCloud::evolve(const scalar dtFluid)
             // middle
             settings_.walls().update(*system_, midStepTime(dtFluid));
             system_->step(nSub);
+            if (settings_.deformingBox())
+            {
+                grid_.followBox(system_->boxUpper());
+            }
         }
     );
     stepSeconds_ += std::chrono::duration<double>

@@ -8,6 +8,8 @@
 #include "contactLaw.H"
 #include "Enum.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -31,13 +33,14 @@ static const Enum<dem::GrainFlag> grainFlagNames
 //- The entries of demProperties: read by parameters() (backend ...
 //- density, contact, wallContact), demWalls (gravity, walls),
 //- applyGrainFlags (grainFlags), the constructor and bondProperties
-//- (output, bonds) and grainStartState (wrapGrains, maxInitialOverlap)
+//- (output, bonds, boxLengthRate) and grainStartState (wrapGrains,
+//- maxInitialOverlap)
 static const wordList demPropertiesNames
 ({
     "backend", "threads", "timeStep", "maxTimeStepFraction",
     "neighbourSkin", "viscousDrag", "density", "gravity", "gravityCoeffs",
     "contact", "wallContact", "walls", "grainFlags", "output", "bonds",
-    "wrapGrains", "maxInitialOverlap"
+    "wrapGrains", "maxInitialOverlap", "boxLengthRate"
 });
 
 //- The entries of 'output': format, capsuleSurfaces and progressInterval
@@ -114,8 +117,11 @@ Foam::demSettings::demSettings
     asciiOutput_(false),
     surfaceChoiceGiven_(false),
     surfaceOutput_(true),
-    progressInterval_(5)
+    progressInterval_(5),
+    boxLengthRate_(Zero)
 {
+    readBoxLengthRate();
+
     if (properties_.found("output"))
     {
         const dictionary& output = properties_.subDict("output");
@@ -147,6 +153,51 @@ Foam::demSettings::demSettings
                 << "; it must be >= 0 (seconds of wall time between progress"
                 << " lines, 0: every fluid step)" << nl
                 << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demSettings::readBoxLengthRate()
+{
+    const dictionary& dict = properties_;
+    boxLengthRate_ = dict.getOrDefault<vector>("boxLengthRate", Zero);
+    const char* const names[3] = {"x", "y", "z"};
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar rate = boxLengthRate_[d];
+        if (rate == 0)
+        {
+            continue;
+        }
+        string why;
+        if (!std::isfinite(rate))
+        {
+            why = "is not finite";
+        }
+        else if (d == 2)
+        {
+            why = "changes z, which is never periodic (walls bound it)";
+        }
+        else if (!grid_.periodic[d])
+        {
+            why = "changes " + word(names[d]) + ", whose mesh sides are not"
+                " cyclic patches (only a periodic length can change)";
+        }
+        else if (Pstream::parRun())
+        {
+            why = "is not available over MPI ranks (a deforming box runs on"
+                " one process)";
+        }
+        if (!why.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'boxLengthRate' " << boxLengthRate_ << " in "
+                << dict.name() << " " << why.c_str() << "; it is the rate of"
+                << " change [m/s] of the periodic lengths (x y 0), the upper"
+                << " sides moving" << nl << exit(FatalIOError);
         }
     }
 }

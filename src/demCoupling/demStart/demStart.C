@@ -16,6 +16,7 @@
 const char* const Foam::demStart::topWall0Key = "demCloud.topWallInitialPosition";
 const char* const Foam::demStart::displacement0Key = "demCloud.displacementAtStart";
 const char* const Foam::demStart::periodicBoxKey = "demCloud.periodicBox";
+const char* const Foam::demStart::boxMotionKey = "demCloud.boxMotion";
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -103,6 +104,7 @@ void Foam::demStart::startFromState(const fileName& path, dem::System& system)
     const std::vector<double> topWall0(own(topWall0Key));
     std::vector<double> displacement0(own(displacement0Key));
     const std::vector<double> stateBox(own(periodicBoxKey));
+    std::vector<double> boxMotion(own(boxMotionKey));
 
     system.importState(state);
     checkGrainsInsideMesh(system, path);
@@ -126,6 +128,7 @@ void Foam::demStart::startFromState(const fileName& path, dem::System& system)
     {
         topWall0_ = topWall0[0];
         displacement0_ = std::move(displacement0);
+        boxMotion_ = std::move(boxMotion);
         Info<< "    restart from " << path << " (" << system.grainCount()
             << " grains)" << endl;
         return;
@@ -345,12 +348,22 @@ void Foam::demStart::addOwnEntries
     dem::SystemState& state,
     const scalar topWall0,
     const std::vector<double>& displacement0,
-    const dem::UniformGrid& grid
+    const dem::UniformGrid& grid,
+    const dem::Parameters& parameters
 )
 {
     state.reals[topWall0Key] = {topWall0};
     state.reals[displacement0Key] = displacement0;
     state.reals[periodicBoxKey] = periodicBox(grid);
+    const dem::Parameters& p = parameters;
+    if (p.boxLengthRate[0] != 0 || p.boxLengthRate[1] != 0)
+    {
+        state.reals[boxMotionKey] =
+        {
+            p.boxUpper[0], p.boxUpper[1], p.boxTime,
+            p.boxLengthRate[0], p.boxLengthRate[1]
+        };
+    }
 }
 
 

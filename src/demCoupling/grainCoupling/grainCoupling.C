@@ -163,6 +163,15 @@ Foam::grainCoupling::grainCoupling
            .diameter(cloud_.meanDiameter());
     }
 
+    if (coupled() && cloud_.deformingBox())
+    {
+        FatalIOErrorInFunction(cloud_.properties())
+            << "Entry 'boxLengthRate' in " << cloud_.properties().name()
+            << ": a deforming periodic box runs without a fluid only"
+            << " (demFoam); the fluid's mesh keeps its box. Remove the entry"
+            << " or set it to (0 0 0)" << nl << exit(FatalIOError);
+    }
+
     if (coupled())
     {
         // Where the deposit may reach at walls: the grains' own setting

@@ -130,12 +130,15 @@ void Foam::grainWriter::writeGrains
     if (settings_.bonds().writeVtk())
     {
         const fileName bondsVtp(vtkDir/("bonds_" + runTime.timeName() + ".vtp"));
+        // The periodic lengths now (a deforming box's have changed)
+        dem::Parameters box(system.parameters());
+        box.boxUpper = system.boxUpper();
         bondVtkWriter::writeVtp
         (
             bondsVtp,
             bonds,
             g,
-            system.parameters(),
+            box,
             settings_.asciiOutput()
         );
         grainVtkWriter::writeSeries
@@ -171,7 +174,10 @@ void Foam::grainWriter::writeState
             "exporting the grains' state", [&]{ return system.exportState(); }
         )
     );
-    demStart::addOwnEntries(state, topWall0, displacement0, grid);
+    demStart::addOwnEntries
+    (
+        state, topWall0, displacement0, grid, system.parameters()
+    );
     demStateFile(dir/"demState").write(state);
 
     // Decomposed: also the whole system as one process's state in the case
@@ -192,7 +198,10 @@ void Foam::grainWriter::writeState
         {
             const fileName caseDir(runTime.globalPath()/runTime.timeName());
             mkDir(caseDir);
-            demStart::addOwnEntries(whole, topWall0, displacement0, grid);
+            demStart::addOwnEntries
+            (
+                whole, topWall0, displacement0, grid, system.parameters()
+            );
             demStateFile(caseDir/"demState").write(whole);
         }
     }

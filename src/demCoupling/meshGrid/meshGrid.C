@@ -288,6 +288,15 @@ void Foam::meshGrid::findRankBoxes
 }
 
 
+void Foam::meshGrid::followBox(const std::array<double, 2>& upper)
+{
+    for (int d = 0; d < 2; ++d)
+    {
+        grid_.spacing[d] = (upper[d] - grid_.origin[d])/grid_.n[d];
+    }
+}
+
+
 void Foam::meshGrid::toMesh(const std::vector<double>& g, scalarField& f) const
 {
     forAll(cellOfGrid_, gi)

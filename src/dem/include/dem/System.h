@@ -80,6 +80,10 @@ public:
     //- From now on the periodic lengths change at `rate` [m/s] (Parameters::boxLengthRate),
     //- from the box as it is now (Parameters::boxTime becomes time()); {0, 0} stops them.
     void setBoxLengthRate(const std::array<double, 2>& rate);
+    //- The box's motion as Parameters give it: boxUpper at System time boxTime, changing at
+    //- boxLengthRate (a restart continuing a deforming box to the bit; boxLower is kept).
+    void setBoxMotion(const std::array<double, 2>& boxUpper, double boxTime,
+                      const std::array<double, 2>& rate);
     //- The box's upper corner in x and y now: boxLower + the lengths at time().
     std::array<double, 2> boxUpper() const;
 

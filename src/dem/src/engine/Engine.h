@@ -56,7 +56,8 @@ public:
     virtual double maximumBondStiffness() const { return 0.0; }
     virtual void setTimeStep(double dt) = 0;
     //- Parameters::boxLengthRate from now on, from the current box (checked by System).
-    virtual void setBoxLengthRate(const std::array<double, 2>& rate) = 0;
+    virtual void setBoxMotion(const std::array<double, 2>& upper, double time,
+                              const std::array<double, 2>& rate) = 0;
     virtual std::array<double, 2> boxUpper() const = 0;
     virtual void step(int nSteps) = 0;
 

@@ -49,7 +49,8 @@ public:
     template <class T>
     using Vec = typename Exec::template Vector<T>;
 
-    explicit EngineImpl(const Parameters& p) : params_(p)
+    explicit EngineImpl(const Parameters& p)
+        : params_(p), boxLengthAtBuild_{boxLength(0), boxLength(1)}
     {
         grains_.setCapsulePath(p.bonds.enabled); // bonds take the capsule forms
         if (p.decomposition.rankCount() > 1)
@@ -107,12 +108,12 @@ public:
     void setGravity(const std::array<double, 3>& gravity) override { params_.gravity = gravity; }
     double maximumBondStiffness() const override;
     void setTimeStep(double dt) override { params_.timeStep = dt; }
-    void setBoxLengthRate(const std::array<double, 2>& rate) override
+    void setBoxMotion(const std::array<double, 2>& upper, double time,
+                      const std::array<double, 2>& rate) override
     {
-        params_.boxUpper = boxUpper();
-        params_.boxTime = positionsTime_;
+        params_.boxUpper = upper;
+        params_.boxTime = time;
         params_.boxLengthRate = rate;
-        needRebuild_ = true; // the last list's skin did not count the change of rate
     }
     std::array<double, 2> boxUpper() const override
     {
@@ -295,11 +296,13 @@ private:
     {
         return boxLength(d) + params_.boxLengthRate[d] * (positionsTime_ - params_.boxTime);
     }
-    //- How far the box's lengths moved since the last rebuild (the Verlet test's share).
+    //- How far the box's lengths moved since the last rebuild (the Verlet test's share: a
+    //- pair across a seam is nearer by at most that; 0 in a fixed box).
     double boxChangeSinceBuild() const
     {
-        const double rx = params_.boxLengthRate[0], ry = params_.boxLengthRate[1];
-        return std::sqrt(rx * rx + ry * ry) * std::abs(positionsTime_ - positionsTimeAtBuild_);
+        const double dx = currentBoxLength(0) - boxLengthAtBuild_[0];
+        const double dy = currentBoxLength(1) - boxLengthAtBuild_[1];
+        return std::sqrt(dx * dx + dy * dy);
     }
 
     //- The contact-law family: calls f(law, frictionlessLaw) with the evaluators of material
@@ -625,7 +628,8 @@ private:
     std::size_t rebuilds_ = 0;
     double time_ = 0.0;
     double positionsTime_ = 0.0; //!< time of the grains' positions (time_ + dt inside step())
-    double positionsTimeAtBuild_ = 0.0; //!< positionsTime_ at the last rebuild
+    //- currentBoxLength at the last rebuild (state of a deforming box: "box.lengthAtBuild")
+    std::array<double, 2> boxLengthAtBuild_;
     long long steps_ = 0;
 };
 

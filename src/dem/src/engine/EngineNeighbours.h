@@ -109,7 +109,7 @@ void EngineImpl<Exec>::rebuild()
     CellGridView cells = cellGrid();
     Exec::forEach(n, WrapIntoBox{grains_.vec3(fPosition), grains_.vec3(fVelocity),
                                  grains_.integer(fImage), box, n});
-    positionsTimeAtBuild_ = positionsTime_;
+    boxLengthAtBuild_ = {box.length[0], box.length[1]};
 
     // Sort by cell: grains of a cell become contiguous and neighbours close in memory.
     const int cellCount = cells.n[0] * cells.n[1] * cells.n[2];

@@ -104,6 +104,8 @@ SystemState EngineImpl<Exec>::exportState() const
     s.integers["walls.layout"] = {kMaxWalls}; // grain wall records per grain; 4 per wall int
     s.integers["pairs.historyLayout"] = {kHistoryLayout};
     s.reals["clock"] = {time_, params_.timeStep, params_.viscousDrag};
+    if (params_.boxLengthRate[0] != 0.0 || params_.boxLengthRate[1] != 0.0)
+        s.reals["box.lengthAtBuild"] = {boxLengthAtBuild_[0], boxLengthAtBuild_[1]};
     s.integers["counters"] = {steps_,
                               std::int64_t(rebuilds_),
                               grainsAtLastBuild_,
@@ -237,6 +239,12 @@ void EngineImpl<Exec>::importState(const SystemState& s)
         throw Error("importState: 'clock' must have 3 entries");
     time_ = clock[0];
     positionsTime_ = time_;
+    // The list was built in this box, unless a deforming box's state says otherwise
+    const auto built = s.reals.find("box.lengthAtBuild");
+    if (built != s.reals.end() && built->second.size() == 2)
+        boxLengthAtBuild_ = {built->second[0], built->second[1]};
+    else
+        boxLengthAtBuild_ = {currentBoxLength(0), currentBoxLength(1)};
     params_.timeStep = clock[1];
     params_.viscousDrag = clock[2];
     steps_ = counters[0];
