@@ -413,7 +413,7 @@ class SettlementStudy:
                      f" {row['coordinationNumber']:.2f}")
             rows.append(row)
         self.results["preparationSweep"] = rows
-        plot_preparation_sweep(rows, self.dir, rate, self.strength())
+        plot_preparation_sweep(rows, self.dir, rate, self.strength(), self.contract_y)
         self.write_results()
         return rows
 
@@ -558,10 +558,11 @@ def bond_mode_stresses(path):
             "bend": b["bendMoment"] * rb / inertia}
 
 
-def plot_preparation_sweep(rows, out_dir, rate, strength):
-    """settlementPreparation.png: bonds frozen and broken in the contraction,
-    and the 95th percentile of the intact bonds' stress per mode at its end,
-    against the contact viscosity; the slower contractions as open marks."""
+def plot_preparation_sweep(rows, out_dir, rate, strength, contract_y=False):
+    """settlementPreparation.png (settlementPreparationContractY.png with
+    --contract-y): bonds frozen and broken in the contraction, and the 95th
+    percentile of the intact bonds' stress per mode at its end, against the
+    contact viscosity; the slower contractions as open marks."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -579,7 +580,8 @@ def plot_preparation_sweep(rows, out_dir, rate, strength):
                        textcoords="offset points", xytext=(6, -10), fontsize=7)
     ax[0].set_xlabel("contact viscosity while contracting ν_s [Pa s]")
     ax[0].set_ylabel("bonds in the contraction")
-    ax[0].set_title(f"filled: strain rate {rate:g} 1/s; open: slower", fontsize=9)
+    ax[0].set_title(f"contracting x, {'y, ' if contract_y else ''}z; filled: strain rate"
+                    f" {rate:g} 1/s; open: slower", fontsize=9)
     ax[0].legend(fontsize=8)
     for mode, mark in (("tension", "v"), ("shear", "^"), ("twist", "D"), ("bend", "o")):
         ax[1].loglog(nu, [max(r["modeStress95"].get(mode, 0.0), 1e-3) for r in base],
@@ -589,7 +591,8 @@ def plot_preparation_sweep(rows, out_dir, rate, strength):
     ax[1].set_ylabel("95th percentile of the intact bonds' stress [Pa]")
     ax[1].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "settlementPreparation.png"), dpi=120)
+    name = "settlementPreparationContractY.png" if contract_y else "settlementPreparation.png"
+    fig.savefig(os.path.join(out_dir, name), dpi=120)
     plt.close(fig)
 
 
