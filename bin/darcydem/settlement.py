@@ -222,7 +222,7 @@ class Run:
 class SettlementStudy:
     def __init__(self, study_dir, size="quick", log=say,
                  preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None,
-                 bond_point=None, contract_y=False):
+                 bond_point=None, contract_y=False, preparation_rate=None):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
@@ -245,6 +245,9 @@ class SettlementStudy:
         # --contract-y: the periodic y length contracts with the walls (boxLengthRate)
         self.contract_y = contract_y
         self.results["settings"]["contractY"] = contract_y
+        # --preparation-rate: the contraction's wall strain rate [1/s] (None: the size's)
+        self.preparation_rate = preparation_rate
+        self.results["settings"]["preparationRate"] = preparation_rate
 
     # ---- stages ---------------------------------------------------------------------------
     def stage(self, name, state_from=None, ly=None):
@@ -361,7 +364,8 @@ class SettlementStudy:
     def prepare(self):
         s = self.s
         dem = "constant/demProperties"
-        a = self.contract("contract", self.preparation_viscosity, s["strainRate"])
+        rate = s["strainRate"] if self.preparation_rate is None else self.preparation_rate
+        a = self.contract("contract", self.preparation_viscosity, rate)
 
         b = self.stage("relax", state_from=self.last_state(a))
         self.set_walls(b, moving=False)
@@ -807,6 +811,9 @@ def main(argv):
                     default=PREPARATION_VISCOSITY,
                     help="the bonds' contact viscosity while the sample is made [Pa s]"
                          " (default %(default)g)")
+    ap.add_argument("--preparation-rate", type=float, metavar="RATE",
+                    help="the walls' strain rate while the sample is contracted [1/s], < 0"
+                         " (default: the size's, -1 quick and paper, -2 test)")
     ap.add_argument("--strength-scale", type=float, metavar="SCALE",
                     help="the bonds' strength scale (of sigma_ice) in every stage, instead of"
                          " the template's (the paper's scaling: 1e-3)")
@@ -823,6 +830,9 @@ def main(argv):
     if not a.preparation_viscosity > 0:
         sys.exit(f"settlementStudy: --preparation-viscosity {a.preparation_viscosity:g}:"
                  " the contact viscosity must be > 0 Pa s")
+    if a.preparation_rate is not None and not a.preparation_rate < 0:
+        sys.exit(f"settlementStudy: --preparation-rate {a.preparation_rate:g}: the contraction's"
+                 " strain rate must be < 0 1/s")
     if a.strength_scale is not None and not a.strength_scale > 0:
         sys.exit(f"settlementStudy: --strength-scale {a.strength_scale:g}: the scale must be > 0")
     if a.weak_bonds is not None and not a.weak_bonds > 0:
@@ -831,7 +841,7 @@ def main(argv):
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             preparation_viscosity=a.preparation_viscosity,
                             strength_scale=a.strength_scale, bond_point=a.bond_point,
-                            contract_y=a.contract_y)
+                            contract_y=a.contract_y, preparation_rate=a.preparation_rate)
     if a.preparation_sweep:
         study.preparation_sweep()
         return

@@ -86,10 +86,13 @@ def copy_study(tmp_path, solver, tutorial, name="study"):
     ("--weak-bonds", "settlementStudy: --weak-bonds 0: the scale must be > 0"),
     ("--strength-scale", "settlementStudy: --strength-scale 0: the scale must be > 0"),
     ("--preparation-viscosity",
-     "settlementStudy: --preparation-viscosity 0: the contact viscosity must be > 0 Pa s")])
+     "settlementStudy: --preparation-viscosity 0: the contact viscosity must be > 0 Pa s"),
+    ("--preparation-rate",
+     "settlementStudy: --preparation-rate 0: the contraction's strain rate must be < 0 1/s")])
 def test_settlement_scales_must_be_positive(tmp_path, option, message):
     """settlementStudy --weak-bonds 0 or --strength-scale 0 (a bond strength of
-    zero) or --preparation-viscosity 0 (bonds without viscosity): one line
+    zero), --preparation-viscosity 0 (bonds without viscosity) or
+    --preparation-rate 0 (no contraction): one line
     naming the option, before any folder is looked at or made."""
     copy_study(tmp_path, "demFoam", "snowSettlement")
     r = run(["settlementStudy", "study", option, "0"], tmp_path)

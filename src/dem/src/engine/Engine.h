@@ -55,7 +55,8 @@ public:
     //- (the critical time step); 0 without bonds.
     virtual double maximumBondStiffness() const { return 0.0; }
     virtual void setTimeStep(double dt) = 0;
-    //- Parameters::boxLengthRate from now on, from the current box (checked by System).
+    //- The box's motion: boxUpper at time, changing at rate (Parameters::boxLengthRate;
+    //- checked by System); boxUpper: the box now.
     virtual void setBoxMotion(const std::array<double, 2>& upper, double time,
                               const std::array<double, 2>& rate) = 0;
     virtual std::array<double, 2> boxUpper() const = 0;

@@ -429,8 +429,8 @@ private:
     {
         const int axis = wall.spec.axis;
         if (axis == 2)
-            return boxLength(0) * boxLength(1);
-        return boxLength(1 - axis) * zWallGap();
+            return currentBoxLength(0) * currentBoxLength(1);
+        return currentBoxLength(1 - axis) * zWallGap();
     }
     double boxLength(int d) const { return params_.boxUpper[d] - params_.boxLower[d]; }
     //- The gap between the z walls; -1 without a lower and an upper one.
