@@ -119,6 +119,49 @@ void DeformingBox::affineContraction(double coreHalfLength)
     EXPECT_EQ(crossings, 1.0) << "the drift carries grains across the moving seam";
 }
 
+// The same chain bonded, each neighbour to the next and the last across the moving seam to
+// the first (bonded pairs are the bonds'). The incremental bond law integrates the relative
+// velocity: every bond is compressed by |rate| s0 T = 8e-5 m, its elastic normal force
+// -k_ne pi r_b^2 |rate| s0 T with k_ne = E / (2 Rbar) (doc/EQUATIONS.md section 10), the seam
+// bond's too; one that missed the image's velocity would gain dL/dt T = 6e-4 m more, 8 x the
+// others' force. Every grain's net force is then round-off.
+TEST_P(DeformingBox, BondsAcrossTheMovingSeamFollowTheField)
+{
+    dem::Parameters p = chainParameters();
+    p.bonds.enabled = true;
+    p.bonds.youngsModulus = 1e9;
+    p.bonds.normalDampingRatio = 0.2; // the dashpots see the image's velocity too
+    p.bonds.shearDampingRatio = 0.2;
+    dem::System s(p);
+    s.addGrains(chain());
+    std::vector<dem::BondInit> bonds;
+    for (int i = 0; i < kChain; ++i)
+        bonds.push_back({i, (i + 1) % kChain, 0.3 * kRadius});
+    s.addBonds(bonds);
+    s.step(10000);
+    const dem::BondData b = s.bonds();
+    ASSERT_EQ(b.first.size(), std::size_t(kChain)) << "every bond intact";
+    double largest = 0.0, smallest = 1e300;
+    for (double n : b.normalForce)
+    {
+        largest = std::max(largest, std::fabs(n));
+        smallest = std::min(smallest, std::fabs(n));
+    }
+    const dem::GrainData g = s.grains();
+    double worstNet = 0.0;
+    for (int i = 0; i < kChain; ++i)
+        worstNet = std::max(worstNet, norm(at(g.force, i)));
+    std::printf("  bond normal force %.6g .. %.6g N; worst net force on a grain %.1e N\n", smallest,
+                largest, worstNet);
+    const double expected = p.bonds.youngsModulus / (2 * kRadius) * M_PI *
+                            std::pow(0.3 * kRadius, 2) * std::fabs(kStrainRate) * kSpacing *
+                            s.time();
+    std::printf("  expected %.6g N (compression)\n", expected);
+    for (double n : b.normalForce)
+        EXPECT_NEAR(n, -expected, 1e-9 * expected);
+    EXPECT_LT(worstNet, 1e-9 * largest);
+}
+
 // The uninterrupted run and a restart half way (export, import into a System built with the
 // same Parameters) continue on the same box: bit-identical positions.
 TEST_P(DeformingBox, RestartContinuesTheSameBox)
