@@ -14,6 +14,8 @@ import re
 import shutil
 import subprocess
 
+import numpy as np
+
 from darcydem.foamfiles import FOAM_DICTIONARY, read_internal_field, read_probes, time_dirs
 
 PROJECT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -259,6 +261,13 @@ class Case:
     def times(self):
         """Written time directories after 0 as sorted (time, name) pairs."""
         return time_dirs(self.path)
+
+    def bounding_box(self, time_name):
+        """The mesh's (lower, upper) corners at a time (a moving mesh's points of that
+        time), as checkMesh prints them (the case's writePrecision)."""
+        log = self.run("checkMesh", "-time", time_name)
+        m = re.search(r"Overall domain bounding box \(([^)]*)\) \(([^)]*)\)", log)
+        return [np.array(v.split(), float) for v in m.groups()]
 
     def field(self, time_name, name):
         return read_internal_field(os.path.join(self.path, time_name, name))

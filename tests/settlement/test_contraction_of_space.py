@@ -32,9 +32,7 @@ def prepared():
 
 
 def y_extent(case, time_name):
-    log = case.run("checkMesh", "-time", time_name)
-    m = re.search(r"Overall domain bounding box \(([^)]*)\) \(([^)]*)\)", log)
-    lower, upper = (np.array(v.split(), float) for v in m.groups())
+    lower, upper = case.bounding_box(time_name)
     return upper[1] - lower[1]
 
 

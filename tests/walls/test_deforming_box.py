@@ -14,7 +14,6 @@ periodic in x and y, L = 0.1 m), its y length shrinking at 0.5 m/s for
 import filecmp
 import math
 import os
-import re
 import shutil
 
 import numpy as np
@@ -42,14 +41,6 @@ def column(name, rate=RATE, end=END):
     return c
 
 
-def bounding_box(case, time_name):
-    """The mesh's (lower, upper) corners at a time, as checkMesh prints them
-    (17 digits, writePrecision)."""
-    log = case.run("checkMesh", "-time", time_name)
-    m = re.search(r"Overall domain bounding box \(([^)]*)\) \(([^)]*)\)", log)
-    return [np.array(v.split(), float) for v in m.groups()]
-
-
 def grain_volume(case):
     radius = np.loadtxt(case.file("0/grains"), comments=("#", "/"), usecols=3)
     return float(np.sum(4.0 / 3.0 * math.pi * radius ** 3))
@@ -69,7 +60,7 @@ def test_mesh_follows_the_box_and_the_porosity_holds_the_grains(whole):
     times = whole.times()
     assert [n for _, n in times] == ["0.005", "0.01", "0.015", "0.02"]
     for t, name in times:
-        lower, upper = bounding_box(whole, name)
+        lower, upper = whole.bounding_box(name)
         expected = L0 + RATE * t
         print(f"t = {name}: y extent {upper[1] - lower[1]:.17g} m, expected {expected:.17g}")
         # the mesh's points scaled from the points read: round-off of a few 1e-17 m
@@ -101,7 +92,7 @@ def test_restart_reads_the_moved_mesh_and_continues_bit_for_bit(whole):
     # demState), not the written mesh's, which is that box to round-off only
     for f in ("demState", "grains", "porosity"):
         assert filecmp.cmp(c.file(f"0.02/{f}"), whole.file(f"0.02/{f}"), shallow=False), f
-    a, b = bounding_box(c, "0.02"), bounding_box(whole, "0.02")
+    a, b = c.bounding_box("0.02"), whole.bounding_box("0.02")
     assert np.allclose(a[1], b[1], rtol=0, atol=1e-15)
 
 

@@ -127,8 +127,12 @@ void checkBondLaw(const BondParameters& b)
     }
 }
 
-void checkBoxLengthRate(const Parameters& p)
+//- The box: upper above lower, and a length rate only on a periodic side of one process.
+void checkBox(const Parameters& p)
 {
+    for (int d = 0; d < 2; ++d)
+        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
+                p.boxUpper[d], "> boxLower");
     for (int d = 0; d < 2; ++d)
     {
         const char* rate = d == 0 ? "boxLengthRate[0]" : "boxLengthRate[1]";
@@ -156,10 +160,7 @@ void checkParameters(const Parameters& p)
     require(p.viscousDrag >= 0, "viscousDrag", p.viscousDrag, ">= 0");
     require(p.threads >= 0, "threads", p.threads, ">= 0 (0: OpenMP default)");
     require(p.maxPairsPerGrain >= 0, "maxPairsPerGrain", p.maxPairsPerGrain, ">= 0 (0: grow)");
-    for (int d = 0; d < 2; ++d)
-        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
-                p.boxUpper[d], "> boxLower");
-    checkBoxLengthRate(p);
+    checkBox(p);
     checkBondStore(p.bonds);
     checkBondLaw(p.bonds);
     for (int d = 0; d < 2; ++d)
@@ -310,10 +311,7 @@ void System::setBoxMotion(const std::array<double, 2>& upper, double boxTime,
     p.boxUpper = upper;
     p.boxTime = boxTime;
     p.boxLengthRate = rate;
-    for (int d = 0; d < 2; ++d)
-        require(p.boxUpper[d] > p.boxLower[d], d == 0 ? "boxUpper[0]" : "boxUpper[1]",
-                p.boxUpper[d], "> boxLower");
-    checkBoxLengthRate(p);
+    checkBox(p);
     impl_->engine->setBoxMotion(upper, boxTime, rate);
     impl_->parameters = p;
 }
