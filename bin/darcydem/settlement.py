@@ -314,11 +314,16 @@ class SettlementStudy:
         fluid_dt = STEPS_PER_FLUID_STEP * TIME_STEP
         steps = round(end / fluid_dt)
         every = max(1, steps // writes)
+        # the function objects' interval divides the write interval, so that they have a row
+        # at every write (the bonds' .vtp beside their counts): the largest divisor of it
+        # not above the interval that gives about `rows`
+        wanted = max(1, steps // rows)
+        sample = max(d for d in range(1, min(wanted, every) + 1) if every % d == 0)
         c.set(ctl, "deltaT", "%.12g" % fluid_dt)
         c.set(ctl, "endTime", "%.12g" % self.run_time(end))
         c.set(ctl, "writeInterval", every)
         for fo in ("wallStress", "packingStatistics", "bondCreep"):
-            c.set(ctl, f"functions/{fo}/writeInterval", max(1, steps // rows))
+            c.set(ctl, f"functions/{fo}/writeInterval", sample)
         c.set(ctl, "functions/grainDiagnostics/writeInterval", max(1, steps // 200))
         return (steps // every) * every * fluid_dt
 
