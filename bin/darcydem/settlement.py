@@ -61,13 +61,13 @@ TEMPLATE_FILES = ("system/controlDict", "system/blockMeshDict", "constant/demPro
 SIZES = {
     # The paper: 1000 grains in its box, 3 s of settlement per contact viscosity.
     "paper": dict(count=1000, box=PAPER_BOX, settleTime=3.0, viscosities=PAPER_VISCOSITIES,
-                  strainRate=-0.1, seed=1),
+                  seed=1),
     # The same sample, a third of the settlement time.
     "quick": dict(count=1000, box=PAPER_BOX, settleTime=1.0, viscosities=PAPER_VISCOSITIES,
-                  strainRate=-0.1, seed=1),
+                  seed=1),
     # For the tests: 250 grains in a box a quarter of the paper's (half in x and z).
     "test": dict(count=250, box=(0.0095, 0.016, 0.0095), settleTime=0.5,
-                 viscosities=(1.6e5, 1.0e6), strainRate=-0.1, seed=2),
+                 viscosities=(1.6e5, 1.0e6), seed=2),
 }
 
 # Preparation: grains R in [0.4, 0.6] mm, aspect (length / width) in [2, 4]
@@ -75,11 +75,12 @@ RADIUS = (4e-4, 6e-4)
 ASPECT = (2.0, 4.0)
 CONTRACTION = 1.5      # the loose box is this much wider (x) and taller (z)
 SWEEP = 0.9            # the grains' contraction rate over the walls'
-# strainRate (SIZES), the preparation's wall strain rate (--preparation-rate): a Maxwell bond
+# The preparation's wall strain rate [1/s] (--preparation-rate), every size: a Maxwell bond
 # of the preparation (tau = nu_s / E, 0.2-0.3 ms) is viscous on the contraction's time scale
 # and carries about nu_s times its rate of deformation, so nu_s x rate sets the bonds' loads.
 # At the paper's strength (sigma_ice x 1e-3) and 1600 Pa s, -1 1/s broke 89 % of the bonds
 # frozen in the contraction (quick size), -0.1 1/s 13 %; README "At the paper's strength".
+PREPARATION_RATE = -0.1
 RELAX_TIME = 0.1        # [s] with the drag below
 RELAX_LID_MASS = 1e-3   # [kg]: the lid closes a gap of 0.1 mm in about 0.02 s
 RELAX_LID_STRESS = 0.25  # of the real lid's weight over the area
@@ -225,7 +226,7 @@ class Run:
 class SettlementStudy:
     def __init__(self, study_dir, size="quick", log=say,
                  preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None,
-                 bond_point=None, contract_y=False, preparation_rate=None):
+                 bond_point=None, contract_y=False, preparation_rate=PREPARATION_RATE):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
@@ -248,7 +249,7 @@ class SettlementStudy:
         # --contract-y: the periodic y length contracts with the walls (boxLengthRate)
         self.contract_y = contract_y
         self.results["settings"]["contractY"] = contract_y
-        # --preparation-rate: the contraction's wall strain rate [1/s] (None: the size's)
+        # --preparation-rate: the contraction's wall strain rate [1/s]
         self.preparation_rate = preparation_rate
         self.results["settings"]["preparationRate"] = preparation_rate
 
@@ -301,12 +302,6 @@ class SettlementStudy:
             for wall, position in zip(("left", "right", "bottom", "lid"), self.final_walls()):
                 c.set(dem, f"walls/{wall}/position", "%.12g" % position)
 
-    @staticmethod
-    def run_time(end):
-        """The time a run to `end` lasts: whole fluid steps."""
-        fluid_dt = STEPS_PER_FLUID_STEP * TIME_STEP
-        return round(end / fluid_dt) * fluid_dt
-
     def controls(self, c, end, writes, rows=2000):
         """endTime, write times and the function objects' rows (about `rows`);
         returns the last write time (the state the next stage starts from)."""
@@ -320,7 +315,7 @@ class SettlementStudy:
         wanted = max(1, steps // rows)
         sample = max(d for d in range(1, min(wanted, every) + 1) if every % d == 0)
         c.set(ctl, "deltaT", "%.12g" % fluid_dt)
-        c.set(ctl, "endTime", "%.12g" % self.run_time(end))
+        c.set(ctl, "endTime", "%.12g" % (steps * fluid_dt))
         c.set(ctl, "writeInterval", every)
         for fo in ("wallStress", "packingStatistics", "bondCreep"):
             c.set(ctl, f"functions/{fo}/writeInterval", sample)
@@ -372,8 +367,7 @@ class SettlementStudy:
     def prepare(self):
         s = self.s
         dem = "constant/demProperties"
-        rate = s["strainRate"] if self.preparation_rate is None else self.preparation_rate
-        a = self.contract("contract", self.preparation_viscosity, rate)
+        a = self.contract("contract", self.preparation_viscosity, self.preparation_rate)
 
         b = self.stage("relax", state_from=self.last_state(a))
         self.set_walls(b, moving=False)
@@ -399,10 +393,11 @@ class SettlementStudy:
 
     def preparation_sweep(self):
         """The contraction alone at each of SWEEP_VISCOSITIES (at SWEEP_RATE)
-        and at SWEEP_SLOW_VISCOSITY contracting SWEEP_SLOWER times as fast, with the study's bonds (--strength-scale, else the template's
-        strength): how many bonds
-        froze and broke, and the bonds' stress per mode at the end
-        (settlementPreparation.png, results.json "preparationSweep")."""
+        and at SWEEP_SLOW_VISCOSITY contracting SWEEP_SLOWER times as fast,
+        with the study's bonds (--strength-scale, else the template's
+        strength): how many bonds froze and broke, and the bonds' stress per
+        mode at the end (settlementPreparation.png, results.json
+        "preparationSweep")."""
         rate = SWEEP_RATE
         cases = [(nu, rate) for nu in SWEEP_VISCOSITIES]
         cases += [(SWEEP_SLOW_VISCOSITY, rate * f) for f in SWEEP_SLOWER]
@@ -818,9 +813,9 @@ def main(argv):
                     default=PREPARATION_VISCOSITY,
                     help="the bonds' contact viscosity while the sample is made [Pa s]"
                          " (default %(default)g)")
-    ap.add_argument("--preparation-rate", type=float, metavar="RATE",
+    ap.add_argument("--preparation-rate", type=float, metavar="RATE", default=PREPARATION_RATE,
                     help="the walls' strain rate while the sample is contracted [1/s], < 0"
-                         " (default %g)" % SIZES["quick"]["strainRate"])
+                         " (default %(default)g)")
     ap.add_argument("--strength-scale", type=float, metavar="SCALE",
                     help="the bonds' strength scale (of sigma_ice) in every stage, instead of"
                          " the template's (the paper's scaling, 1e-3)")
@@ -837,7 +832,7 @@ def main(argv):
     if not a.preparation_viscosity > 0:
         sys.exit(f"settlementStudy: --preparation-viscosity {a.preparation_viscosity:g}:"
                  " the contact viscosity must be > 0 Pa s")
-    if a.preparation_rate is not None and not a.preparation_rate < 0:
+    if not a.preparation_rate < 0:
         sys.exit(f"settlementStudy: --preparation-rate {a.preparation_rate:g}: the contraction's"
                  " strain rate must be < 0 1/s")
     if a.strength_scale is not None and not a.strength_scale > 0:
