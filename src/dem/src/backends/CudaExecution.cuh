@@ -43,7 +43,10 @@ __global__ void forEachTouchingPairKernel(K kernel, long n)
     kernel.keepHistoryIf(touch, p);
     slot[p] = touch ? int(p) + 1 : 0;
     if (touch)
+    {
+        kernel.pairs.markMayTouch(kernel.pairs.owner[p], kernel.pairs.partner[p]);
         kernel(p);
+    }
 }
 
 template <class F>

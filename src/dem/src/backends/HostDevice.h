@@ -33,6 +33,17 @@ DEM_HD void atomicAddDouble(double* address, double value)
 #endif
 }
 
+//- Store value where several threads may store the same value at once (a relaxed atomic
+//- store; nothing reads it before the pass ends).
+DEM_HD void storeShared(int* address, int value)
+{
+#if defined(__CUDA_ARCH__)
+    *static_cast<volatile int*>(address) = value;
+#else
+    __atomic_store_n(address, value, __ATOMIC_RELAXED);
+#endif
+}
+
 //- Ask for the cache line at address ahead of its use (CPU: a prefetch; GPU: nothing).
 DEM_HD void prefetch(const void* address)
 {

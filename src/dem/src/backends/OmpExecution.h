@@ -102,6 +102,8 @@ struct OmpExecution
                 for (int c = 0; c < count; ++c)
                     for (int v = 0; v < kHistory; ++v)
                         pairs.history[pair[c] + v * hs] = history[v * kBlockPairs + c];
+                for (int c = 0; c < count; ++c)
+                    pairs.markMayTouch(owner[c], partner[c]);
             }
         } // the join is the only barrier
     }

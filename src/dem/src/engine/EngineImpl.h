@@ -367,6 +367,7 @@ private:
                         [&](auto law, auto)
                         {
                             using Kernel = PairForceKernel<decltype(shapes), decltype(law)>;
+                            pairs_.beginPass();
                             Exec::forEachTouchingPair(
                                 Kernel{grains_.view(), pairs_.view(), boxView(), law});
                         });

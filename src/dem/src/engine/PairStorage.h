@@ -7,6 +7,7 @@
 
 #include "kernels/Views.h"
 
+#include <limits>
 #include <utility>
 
 namespace dem
@@ -27,6 +28,9 @@ struct PairStorage
     //- Systems with bonds: 1 for a pair whose grains are bonded (the bond acts, not the
     //- contact law), set after every rebuild, formation and removal.
     Vec<int> bonded;
+    //- Per grain (start.size() - 1 of them): PairView::grainMayTouch, and the pass's number.
+    Vec<int> grainMayTouch;
+    int pass = 0;
     //- Loads per pair: kSphereReactionComponents, or kCapsuleReactionComponents in a system
     //- with capsules (set by the engine before the list is filled).
     int reactionComponents = kSphereReactionComponents;
@@ -51,17 +55,26 @@ struct PairStorage
         v.incomingStart = thrust::raw_pointer_cast(incomingStart.data());
         v.incomingPair = thrust::raw_pointer_cast(incomingPair.data());
         v.bonded = thrust::raw_pointer_cast(bonded.data());
+        v.grainMayTouch = thrust::raw_pointer_cast(grainMayTouch.data());
+        v.pass = pass;
         return v;
     }
 
     //- Loads for the current list (components per record): the zero record and one per pair,
-    //- all zero, every pair pointing at the zero record until the next force pass.
+    //- all zero, every pair pointing at the zero record until the next force pass, no grain
+    //- marked by a pass (the start array sized already).
     void sizeLoads(int components)
     {
         reactionComponents = components;
         reaction.assign(std::size_t(components) * std::size_t(count() + 1), 0.0);
         contactSlot.assign(std::size_t(count()), 0);
+        grainMayTouch.assign(start.size() - 1, 0);
+        pass = 0;
     }
+
+    //- Numbers the next pair pass (1, 2, ...; after 2^31 - 1 passes 1 again: a grain marked
+    //- that long ago only has its zero records summed once more).
+    void beginPass() { pass = pass == std::numeric_limits<int>::max() ? 1 : pass + 1; }
 
     void swap(PairStorage& other)
     {
@@ -74,6 +87,8 @@ struct PairStorage
         reaction.swap(other.reaction);
         contactSlot.swap(other.contactSlot);
         bonded.swap(other.bonded);
+        grainMayTouch.swap(other.grainMayTouch);
+        std::swap(pass, other.pass);
         std::swap(reactionComponents, other.reactionComponents);
     }
 };

@@ -428,28 +428,33 @@ struct GatherKick
         grainLoads.add(j, force, torque);
         // Pairs j owns, then pairs j is the partner of (open pairs read zero loads), in one
         // loop: one hard-to-predict loop exit per grain instead of two. x + (-y) is x - y.
+        // Skipped where no pair of j may touch in this pass (then all its records are the
+        // zero record): most grains of a flowing bed. A branch around the loop, expected
+        // taken: a static bed has contacts nearly everywhere (a zero trip count instead cost
+        // the static benchmark 3 %).
         const long cs = pairs.stride();
         const int firstOwned = pairs.start[j], owned = pairs.start[j + 1] - firstOwned;
         const int firstIncoming = pairs.incomingStart[j] - owned;
         const int all = owned + pairs.incomingStart[j + 1] - pairs.incomingStart[j];
-        for (int k = 0; k < all; ++k)
-        {
-            const bool own = k < owned;
-            const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
-            const double* loads = pairs.template loadsOf<Shapes::kReactionComponents>(p);
-            const double sign = own ? 1.0 : -1.0;
-            force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);
-            if constexpr (Shapes::kCapsules)
+        if (__builtin_expect(pairs.anyMayTouch(j), 1))
+            for (int k = 0; k < all; ++k)
             {
-                const double* t = loads + (own ? 3 : 6) * cs;
-                torque += Vector3d(t[0], t[cs], t[2 * cs]);
+                const bool own = k < owned;
+                const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
+                const double* loads = pairs.template loadsOf<Shapes::kReactionComponents>(p);
+                const double sign = own ? 1.0 : -1.0;
+                force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);
+                if constexpr (Shapes::kCapsules)
+                {
+                    const double* t = loads + (own ? 3 : 6) * cs;
+                    torque += Vector3d(t[0], t[cs], t[2 * cs]);
+                }
+                else
+                {
+                    const double lever = loads[(own ? 6 : 7) * cs];
+                    torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+                }
             }
-            else
-            {
-                const double lever = loads[(own ? 6 : 7) * cs];
-                torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
-            }
-        }
         if constexpr (Shapes::kBonds)
             bonds.add(j, force, torque);
         if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval

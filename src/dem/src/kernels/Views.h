@@ -196,12 +196,25 @@ struct PairView
     const int* incomingStart = nullptr; //!< N + 1: pairs in which grain j is the partner
     const int* incomingPair = nullptr;
     const int* bonded = nullptr; //!< systems with bonds: 1 for a bonded pair (no contact law)
+    //- Per grain: the number of the last pair pass that found a pair of it that may touch.
+    int* grainMayTouch = nullptr;
+    int pass = 0; //!< the number of the pair pass (of the records), >= 1
 
     //- Distance between two components of one record (1 when pair-major).
     DEM_HD long stride() const { return kPairMajorLayout ? 1 : componentStride; }
     //- Distance between two components of one pair's history.
     DEM_HD long historyStride() const { return count; }
     DEM_HD double* historyOf(long p) const { return history + p; }
+    //- Pair (i, j) may touch: GatherKick is to sum the loads of both grains' pairs. It skips
+    //- the grains none of whose pairs may touch in this pass (in a flowing bed most of them):
+    //- their records are all the zero record. (A pass number rather than a flag that GatherKick
+    //- would have to lower: no store per grain and step.)
+    DEM_HD void markMayTouch(long i, long j) const
+    {
+        storeShared(grainMayTouch + i, pass);
+        storeShared(grainMayTouch + j, pass);
+    }
+    DEM_HD bool anyMayTouch(long i) const { return grainMayTouch[i] == pass; }
     //- Pair p's loads, C components per record (the shapes' record): its own record, or the
     //- zero record when the last force pass found that it could not touch.
     template <int C>
