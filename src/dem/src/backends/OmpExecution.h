@@ -51,7 +51,8 @@ struct OmpExecution
     //- vectorised; the pairs that may touch listed in order, with their grains and history
     //- copied into a contiguous scratch (scalar); the contact law vectorised over them only,
     //- the k-th into record first + k + 1 of the block starting at pair first (the records
-    //- stay in pair order, contiguous); the history copied back. Each pair's arithmetic is that
+    //- stay in pair order, contiguous); the history copied back; both grains of each such pair
+    //- marked for GatherKick (PairView::markMayTouch). Each pair's arithmetic is that
     //- of a plain loop over all pairs (vector and scalar iterations round alike,
     //- -ffp-contract=off), so neither the thread count nor the blocks change a bit.
     static constexpr int kBlockPairs = 512;
