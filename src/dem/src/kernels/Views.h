@@ -198,7 +198,9 @@ struct PairView
     const int* bonded = nullptr; //!< systems with bonds: 1 for a bonded pair (no contact law)
     //- Per grain: the number of the last pair pass that found a pair of it that may touch.
     int* grainMayTouch = nullptr;
-    int pass = 0; //!< the number of the pair pass (of the records), >= 1
+    //- The number of the pair pass that wrote the records (1, 2, ...); 0 while a list has had
+    //- none, when every grain counts as marked and GatherKick reads its zero records.
+    int pass = 0;
 
     //- Distance between two components of one record (1 when pair-major).
     DEM_HD long stride() const { return kPairMajorLayout ? 1 : componentStride; }
