@@ -6,6 +6,7 @@
 // keeps cached device memory.
 #pragma once
 
+#include "backends/RecordStaging.h"
 #include "kernels/Views.h"
 
 #include <thrust/system/omp/execution_policy.h>
@@ -47,38 +48,48 @@ struct OmpExecution
 
     //- The pair pass over the pairs of kernel.pairs (a PairForceKernel): those for which
     //- kernel.mayTouch(p) holds are evaluated, the others get a cleared history and the zero
-    //- record (contactSlot[p] = 0). Per thread, blocks of kBlockPairs pairs: the test
-    //- vectorised; the pairs that may touch listed in order, with their grains and history
-    //- copied into a contiguous scratch (scalar); the contact law vectorised over them only,
-    //- the k-th into record first + k + 1 of the block starting at pair first (the records
-    //- stay in pair order, contiguous); the history copied back; both grains of each such pair
-    //- marked for GatherKick (PairView::markMayTouch). Each pair's arithmetic is that
-    //- of a plain loop over all pairs (vector and scalar iterations round alike,
-    //- -ffp-contract=off), so neither the thread count nor the blocks change a bit.
+    //- record (contactSlot[p] = 0). Per thread, blocks of kBlockPairs pairs: both grains'
+    //- positions staged field by field (RecordStaging.h: whole-record loads and shuffles
+    //- instead of element loads) and the test vectorised over them; the pairs that may touch
+    //- listed in order, with their grains and history copied into a contiguous scratch
+    //- (scalar); the contact law vectorised over them only (their grains' records loaded
+    //- element by element: staging them as well measured slower), the k-th into record
+    //- first + k + 1 of the block starting at pair first (the records stay in pair order,
+    //- contiguous); the history copied back; both grains of each such pair marked for
+    //- GatherKick (PairView::markMayTouch). Each pair's arithmetic is that of a plain loop
+    //- over all pairs (vector and scalar iterations round alike, -ffp-contract=off), so
+    //- neither the thread count nor the blocks change a bit.
     static constexpr int kBlockPairs = 512;
     template <class K>
     static void forEachTouchingPair(const K& kernel)
     {
         constexpr int kHistory = 3 * kHistoryVectors;
+        constexpr int B = kBlockPairs; // staging stride: field f of the c-th pair at f B + c
         const long n = kernel.pairs.count;
 #pragma omp parallel if (n >= kParallelThreshold)
         {
             const K local = kernel; // members become loop invariants
             const PairView& pairs = local.pairs;
+            const double* positions = local.g.packedPositionRadius;
             const long hs = pairs.historyStride();
-            int pair[kBlockPairs], owner[kBlockPairs], partner[kBlockPairs];
-            double history[kHistory * kBlockPairs];
+            int pair[B], owner[B], partner[B];
+            double history[kHistory * B];
+            alignas(64) double positionI[4 * B], positionJ[4 * B]; // owners', partners'
             const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
             const long begin = n * thread / threads, end = n * (thread + 1) / threads;
-            for (long first = begin; first < end; first += kBlockPairs)
+            for (long first = begin; first < end; first += B)
             {
-                const int size = int(std::min<long>(kBlockPairs, end - first));
+                const int size = int(std::min<long>(B, end - first));
                 int* slot = pairs.contactSlot + first;
+                staging::stagePositions(positions, pairs.owner + first, size, positionI, B);
+                staging::stagePositions(positions, pairs.partner + first, size, positionJ, B);
 #pragma omp simd
                 for (int k = 0; k < size; ++k)
                 {
-                    const bool touch = local.mayTouch(first + k);
-                    local.keepHistoryIf(touch, first + k);
+                    const long p = first + k;
+                    const bool touch = local.mayTouch(p, pairs.owner[p], pairs.partner[p],
+                                                      positionI + k, positionJ + k, B);
+                    local.keepHistoryIf(touch, p);
                     slot[k] = touch;
                 }
                 int count = 0;
@@ -89,20 +100,22 @@ struct OmpExecution
                     slot[k] = touch * (int(first) + count + 1);
                     count += touch;
                 }
+                if (count == 0)
+                    continue;
                 for (int c = 0; c < count; ++c)
                 {
                     const long p = pair[c];
                     owner[c] = pairs.owner[p];
                     partner[c] = pairs.partner[p];
                     for (int v = 0; v < kHistory; ++v)
-                        history[v * kBlockPairs + c] = pairs.history[p + v * hs];
+                        history[v * B + c] = pairs.history[p + v * hs];
                 }
 #pragma omp simd
                 for (int c = 0; c < count; ++c)
-                    local.evaluate(owner[c], partner[c], history + c, kBlockPairs, first + c + 1);
+                    local.evaluate(owner[c], partner[c], history + c, B, first + c + 1);
                 for (int c = 0; c < count; ++c)
                     for (int v = 0; v < kHistory; ++v)
-                        pairs.history[pair[c] + v * hs] = history[v * kBlockPairs + c];
+                        pairs.history[pair[c] + v * hs] = history[v * B + c];
                 for (int c = 0; c < count; ++c)
                     pairs.markMayTouch(owner[c], partner[c]);
             }

@@ -265,8 +265,14 @@ struct PairForceKernel
     {
         const long i = pairs.owner[p], j = pairs.partner[p];
         const double* xr = g.packedPositionRadius;
-        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
-        double reach = xr[4 * i + 3] + xr[4 * j + 3];
+        return mayTouch(p, i, j, xr + 4 * i, xr + 4 * j, 1);
+    }
+    //- The same with the two grains' positions and radii read from xrI[c * s] and xrJ[c * s],
+    //- c < 4: in place (s = 1) or from a backend's staging of a block of pairs, field by field.
+    DEM_HD bool mayTouch(long p, long i, long j, const double* xrI, const double* xrJ, long s) const
+    {
+        const Vector3d d = box.separation(load(xrI, 0, s), load(xrJ, 0, s));
+        double reach = xrI[3 * s] + xrJ[3 * s];
         if constexpr (Shapes::kCapsules)
             reach += g.coreHalfLength[i] + g.coreHalfLength[j];
         bool may = d.squaredNorm() < (1.0 + kMayTouchMargin) * (reach * reach);

@@ -1,0 +1,79 @@
+// RecordStaging.h
+// CPU backend only (GCC vector extensions): copies the positions and radii of the grains a
+// block of pairs names (GrainView::packedPositionRadius, 4 doubles per grain) into a staging
+// area field by field, so that the vectorised pair test reads contiguous vectors instead of
+// loading every field of every grain element by element. Eight grains at a time: each record
+// read as one 4-double vector and the 8 x 4 block transposed in registers (12 shuffles where
+// element loads took 32 loads and some 28 inserts; the shuffle port is the limit of both).
+// Copies values only: the test's arithmetic, and so every bit of the results, is unchanged.
+#pragma once
+
+#include <cstring>
+
+namespace dem
+{
+namespace detail
+{
+namespace staging
+{
+
+typedef double Lanes4 __attribute__((vector_size(32)));
+typedef double Lanes8 __attribute__((vector_size(64)));
+
+//- Loads 4 doubles from an address aligned to 8 bytes only.
+inline Lanes4 loadLanes4(const double* p)
+{
+    Lanes4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+inline void storeLanes8(double* p, const Lanes8& v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
+
+//- The 4-double records of grains index[0..7] (grain g's at records + 4 g) into
+//- rows[f * stride + 0..7], field f = 0..3.
+inline void transposeEight(const double* records, const int* index, double* rows, long stride)
+{
+    Lanes4 a[8];
+    for (int k = 0; k < 8; ++k)
+        a[k] = loadLanes4(records + 4L * index[k]);
+    // Pairs of records side by side: grains k and k + 4 in one 8-lane vector.
+    const Lanes8 z0 = __builtin_shufflevector(a[0], a[4], 0, 1, 2, 3, 4, 5, 6, 7);
+    const Lanes8 z1 = __builtin_shufflevector(a[1], a[5], 0, 1, 2, 3, 4, 5, 6, 7);
+    const Lanes8 z2 = __builtin_shufflevector(a[2], a[6], 0, 1, 2, 3, 4, 5, 6, 7);
+    const Lanes8 z3 = __builtin_shufflevector(a[3], a[7], 0, 1, 2, 3, 4, 5, 6, 7);
+    // Interleave fields 0 and 2 (even) and 1 and 3 (odd) of grains 0, 1 (4, 5) and 2, 3 (6, 7).
+    const Lanes8 even01 = __builtin_shufflevector(z0, z1, 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes8 odd01 = __builtin_shufflevector(z0, z1, 1, 9, 3, 11, 5, 13, 7, 15);
+    const Lanes8 even23 = __builtin_shufflevector(z2, z3, 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes8 odd23 = __builtin_shufflevector(z2, z3, 1, 9, 3, 11, 5, 13, 7, 15);
+    storeLanes8(rows, __builtin_shufflevector(even01, even23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 0
+    storeLanes8(rows + stride,
+                __builtin_shufflevector(odd01, odd23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 1
+    storeLanes8(rows + 2 * stride,
+                __builtin_shufflevector(even01, even23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 2
+    storeLanes8(rows + 3 * stride,
+                __builtin_shufflevector(odd01, odd23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 3
+}
+
+//- Positions and radii (GrainView::packedPositionRadius, 4 doubles per grain) of grains
+//- index[0 .. count - 1] into stage[f * stride + c] (field f of the c-th grain). Rounds count
+//- up to a multiple of 8, repeating the last grain (stride must leave room for that).
+inline void stagePositions(const double* positions, const int* index, int count, double* stage,
+                           long stride)
+{
+    for (int c = 0; c < count; c += 8)
+    {
+        int group[8];
+        for (int k = 0; k < 8; ++k)
+            group[k] = index[c + k < count ? c + k : count - 1];
+        transposeEight(positions, group, stage + c, stride);
+    }
+}
+
+} // namespace staging
+} // namespace detail
+} // namespace dem
