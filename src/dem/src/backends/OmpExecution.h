@@ -48,23 +48,27 @@ struct OmpExecution
 
     //- The pair pass over the pairs of kernel.pairs (a PairForceKernel): those for which
     //- kernel.mayTouch(p) holds are evaluated, the others get a cleared history and the zero
-    //- record (contactSlot[p] = 0). Per thread, blocks of kBlockPairs pairs: both grains'
-    //- positions staged field by field (RecordStaging.h: whole-record loads and shuffles
-    //- instead of element loads) and the test vectorised over them; the pairs that may touch
-    //- listed in order, with their grains and history copied into a contiguous scratch
-    //- (scalar); the contact law vectorised over them only (their grains' records loaded
-    //- element by element: staging them as well measured slower), the k-th into record
-    //- first + k + 1 of the block starting at pair first (the records stay in pair order,
-    //- contiguous); the history copied back; both grains of each such pair marked for
-    //- GatherKick (PairView::markMayTouch). Each pair's arithmetic is that of a plain loop
-    //- over all pairs (vector and scalar iterations round alike, -ffp-contract=off), so
-    //- neither the thread count nor the blocks change a bit.
+    //- record (contactSlot[p] = 0). Per thread, over its range of pairs in blocks of
+    //- kBlockPairs: both grains' positions staged field by field (RecordStaging.h: whole-record
+    //- loads and shuffles instead of element loads) and the test vectorised over them; the
+    //- pairs that may touch listed in order into a batch, and the k-th pair the thread lists
+    //- given record begin + k + 1 (records stay in pair order; each thread's within its own
+    //- range). Once the batch holds kBlockPairs pairs or more, or the range ends: the batch's
+    //- grains and history copied into a contiguous scratch (scalar); the contact law
+    //- vectorised over it (grains' records loaded element by element: staging them as well
+    //- measured slower); the history copied back; both grains of each pair marked for
+    //- GatherKick (PairView::markMayTouch). Batches rather than blocks: a flowing bed has a
+    //- few pairs in a block that may touch, and a vector loop over so few ran at a quarter of
+    //- its speed. Each pair's arithmetic is that of a plain loop over all pairs (vector and
+    //- scalar iterations round alike, -ffp-contract=off), so neither the thread count nor the
+    //- blocks change a bit.
     static constexpr int kBlockPairs = 512;
     template <class K>
     static void forEachTouchingPair(const K& kernel)
     {
         constexpr int kHistory = 3 * kHistoryVectors;
-        constexpr int B = kBlockPairs; // staging stride: field f of the c-th pair at f B + c
+        constexpr int B = kBlockPairs; // staging stride: field f of the k-th pair at f B + k
+        constexpr int kBatch = 2 * B;  // a batch of B - 1 pairs and a block of B that may touch
         const long n = kernel.pairs.count;
 #pragma omp parallel if (n >= kParallelThreshold)
         {
@@ -72,11 +76,13 @@ struct OmpExecution
             const PairView& pairs = local.pairs;
             const double* positions = local.g.packedPositionRadius;
             const long hs = pairs.historyStride();
-            int pair[B], owner[B], partner[B];
-            double history[kHistory * B];
+            int pair[kBatch], owner[kBatch], partner[kBatch];
+            double history[kHistory * kBatch];
             alignas(64) double positionI[4 * B], positionJ[4 * B]; // owners', partners'
             const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
             const long begin = n * thread / threads, end = n * (thread + 1) / threads;
+            long batchRecord = begin + 1; // the record of the batch's first pair
+            int count = 0;                // pairs in the batch
             for (long first = begin; first < end; first += B)
             {
                 const int size = int(std::min<long>(B, end - first));
@@ -92,15 +98,14 @@ struct OmpExecution
                     local.keepHistoryIf(touch, p);
                     slot[k] = touch;
                 }
-                int count = 0;
                 for (int k = 0; k < size; ++k)
                 {
                     const int touch = slot[k];    // 0 or 1; arithmetic, not a branch
                     pair[count] = int(first) + k; // overwritten unless touch
-                    slot[k] = touch * (int(first) + count + 1);
+                    slot[k] = touch * int(batchRecord + count);
                     count += touch;
                 }
-                if (count == 0)
+                if (count < B && first + B < end)
                     continue;
                 for (int c = 0; c < count; ++c)
                 {
@@ -108,16 +113,18 @@ struct OmpExecution
                     owner[c] = pairs.owner[p];
                     partner[c] = pairs.partner[p];
                     for (int v = 0; v < kHistory; ++v)
-                        history[v * B + c] = pairs.history[p + v * hs];
+                        history[v * kBatch + c] = pairs.history[p + v * hs];
                 }
 #pragma omp simd
                 for (int c = 0; c < count; ++c)
-                    local.evaluate(owner[c], partner[c], history + c, B, first + c + 1);
+                    local.evaluate(owner[c], partner[c], history + c, kBatch, batchRecord + c);
                 for (int c = 0; c < count; ++c)
                     for (int v = 0; v < kHistory; ++v)
-                        pairs.history[pair[c] + v * hs] = history[v * B + c];
+                        pairs.history[pair[c] + v * hs] = history[v * kBatch + c];
                 for (int c = 0; c < count; ++c)
                     pairs.markMayTouch(owner[c], partner[c]);
+                batchRecord += count;
+                count = 0;
             }
         } // the join is the only barrier
     }

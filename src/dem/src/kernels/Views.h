@@ -176,10 +176,11 @@ constexpr bool kPairMajorLayout = true;
 
 //- Half neighbour list (pair p owned by the lower index) and its per-pair state.
 //- The loads of pair p live in the record contactSlot[p] > 0 that the last force pass gave it
-//- (p + 1 on the GPU; on the CPU the pairs of a block that may touch fill the block's first
-//- records in order), or in record 0, which holds zeros, when the pair could not touch
-//- (contactSlot[p] = 0): most listed pairs do not touch (about 60 % at the benchmark's 2e-3 m
-//- skin), and they cost the force pass neither the contact law nor a store of loads.
+//- (p + 1 on the GPU; on the CPU the pairs of a thread's range that may touch fill the
+//- range's first records in order), or in record 0, which holds zeros, when the pair could
+//- not touch (contactSlot[p] = 0): most listed pairs do not touch (about 60 % at the
+//- benchmark's 2e-3 m skin), and they cost the force pass neither the contact law nor a
+//- store of loads.
 struct PairView
 {
     long count = 0;
