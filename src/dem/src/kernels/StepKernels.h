@@ -133,17 +133,37 @@ struct GrainForceKernel
         const Vector3d x = g.packedPosition(i), v = g.packedVelocity(i),
                        omega = g.packedAngularVelocity(i);
         const double r = g.packedRadius(i);
-        const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
-        const double mass = 1.0 / g.packedVelocities[8L * i + 3];
-        force = mass * gvec - drag * v; // m g - c v
+        force = gravityAndDrag(i, v);
         torque = Vector3d::Zero();
         if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
-            force += fluid.force(
-                i, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0), gvec);
+            force +=
+                fluid.force(i, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0),
+                            Vector3d(gravity[0], gravity[1], gravity[2]));
         if constexpr (Shapes::kCapsules)
             addEndContacts(i, x, v, omega, r, force, torque);
         else
             addWallContacts(i, x, v, omega, r, force, torque);
+    }
+
+    //- m g - c v of grain i at velocity v.
+    DEM_HD Vector3d gravityAndDrag(int i, const Vector3d& v) const
+    {
+        const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
+        const double mass = 1.0 / g.packedVelocities[8L * i + 3];
+        return mass * gvec - drag * v;
+    }
+
+    //- Whether gravity and drag are all that add() gives sphere i at x (radius r): no fluid
+    //- force, no wall that it touches, and none that it touched at the last step (whose
+    //- record add() would clear).
+    DEM_HD bool gravityAndDragOnly(int i, const Vector3d& x, double r) const
+    {
+        if (fluid.active || g.wallContacts[i] != 0)
+            return false;
+        for (int w = 0; w < walls.count; ++w)
+            if (!(r - walls.distance(w, x) <= 0.0)) // addWallContacts' test (NaN: touching)
+                return false;
+        return true;
     }
 
     //- Prefetch grain i's wall records if it is near a wall: the few grains on a wall are
@@ -427,6 +447,9 @@ struct GatherKick
     DEM_HD double operator()(int j) const
     {
         grainLoads.prefetchWallState(j + GrainForceKernel<Shapes, WallLaw>::kWallPrefetchDistance);
+        // Most grains of a flowing bed: gravity, drag, kicks and drift only.
+        if (freeFlightPossible() && inFreeFlight(j))
+            return freeFlight(j);
         const int flag = g.flag[j];
         if (flag == kFlagGhost) // its owner sums its loads and moves it
             return 0.0;
@@ -488,6 +511,44 @@ struct GatherKick
         const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
         if constexpr (Shapes::kBonds)
             turnSphere(g, j, omega, dt);
+        for (int c = 0; c < 3; ++c)
+        {
+            xr[c] = x[c];
+            vw[c] = v[c];
+            vw[4 + c] = omega[c];
+        }
+        const double* b = g.packedPositionAtBuild + 4L * j;
+        return movedOrInfinity((x - Vector3d(b[0], b[1], b[2])).squaredNorm());
+    }
+
+    //- Whether operator()(j) would take grain j through gravity, drag, two half kicks and a
+    //- drift only (where freeFlightPossible): a free grain with none of its pairs that may
+    //- touch in this pass and gravityAndDragOnly.
+    //- In a flowing bed most grains.
+    DEM_HD bool inFreeFlight(int j) const
+    {
+        const double* xr = g.packedPositionRadius + 4L * j;
+        return g.flag[j] == kFlagFree && !pairs.anyMayTouch(j) &&
+               grainLoads.gravityAndDragOnly(j, Vector3d(xr[0], xr[1], xr[2]), xr[3]);
+    }
+    //- Whether any grain may be inFreeFlight in this pass (else freeFlight is not to be called).
+    DEM_HD bool freeFlightPossible() const
+    {
+        return !Shapes::kCapsules && !Shapes::kBonds && driftNext && !grainLoads.fluid.active;
+    }
+
+    //- operator()(j) for a grain inFreeFlight: the same arithmetic in the same order (the
+    //- same bits) without the cases that do not arise (walls, pairs, fluid, flags).
+    DEM_HD double freeFlight(int j) const
+    {
+        double* vw = g.packedVelocities + 8L * j;
+        double* xr = g.packedPositionRadius + 4L * j;
+        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        const Vector3d force = grainLoads.gravityAndDrag(j, v);
+        const Vector3d torque = Vector3d::Zero();
+        kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
+        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
         for (int c = 0; c < 3; ++c)
         {
             xr[c] = x[c];
