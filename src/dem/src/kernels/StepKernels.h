@@ -511,6 +511,16 @@ struct GatherKick
         const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
         if constexpr (Shapes::kBonds)
             turnSphere(g, j, omega, dt);
+        return storeDrifted(j, x, v, omega);
+    }
+
+    //- Sphere j's state after the drift into its packed records; returns |x - x_build|^2
+    //- (see movedOrInfinity).
+    DEM_HD double storeDrifted(int j, const Vector3d& x, const Vector3d& v,
+                               const Vector3d& omega) const
+    {
+        double* vw = g.packedVelocities + 8L * j;
+        double* xr = g.packedPositionRadius + 4L * j;
         for (int c = 0; c < 3; ++c)
         {
             xr[c] = x[c];
@@ -523,8 +533,7 @@ struct GatherKick
 
     //- Whether operator()(j) would take grain j through gravity, drag, two half kicks and a
     //- drift only (where freeFlightPossible): a free grain with none of its pairs that may
-    //- touch in this pass and gravityAndDragOnly.
-    //- In a flowing bed most grains.
+    //- touch in this pass and gravityAndDragOnly. In a flowing bed most grains.
     DEM_HD bool inFreeFlight(int j) const
     {
         const double* xr = g.packedPositionRadius + 4L * j;
@@ -541,22 +550,14 @@ struct GatherKick
     //- same bits) without the cases that do not arise (walls, pairs, fluid, flags).
     DEM_HD double freeFlight(int j) const
     {
-        double* vw = g.packedVelocities + 8L * j;
-        double* xr = g.packedPositionRadius + 4L * j;
+        const double* vw = g.packedVelocities + 8L * j;
+        const double* xr = g.packedPositionRadius + 4L * j;
         Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
         const Vector3d force = grainLoads.gravityAndDrag(j, v);
         const Vector3d torque = Vector3d::Zero();
         kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
-        const Vector3d x = Vector3d(xr[0], xr[1], xr[2]) + dt * v;
-        for (int c = 0; c < 3; ++c)
-        {
-            xr[c] = x[c];
-            vw[c] = v[c];
-            vw[4 + c] = omega[c];
-        }
-        const double* b = g.packedPositionAtBuild + 4L * j;
-        return movedOrInfinity((x - Vector3d(b[0], b[1], b[2])).squaredNorm());
+        return storeDrifted(j, Vector3d(xr[0], xr[1], xr[2]) + dt * v, v, omega);
     }
 
     //- The same for a capsule: translation as a sphere's, rotation from the global angular
