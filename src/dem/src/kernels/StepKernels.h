@@ -153,12 +153,12 @@ struct GrainForceKernel
         return mass * gvec - drag * v;
     }
 
-    //- Whether gravity and drag are all that add() gives sphere i at x (radius r): no fluid
-    //- force, no wall that it touches, and none that it touched at the last step (whose
-    //- record add() would clear).
+    //- Whether, without a fluid (GatherKick::freeFlightPossible checks that once per pass),
+    //- gravity and drag are all that add() gives sphere i at x (radius r): no wall that it
+    //- touches, and none that it touched at the last step (whose record add() would clear).
     DEM_HD bool gravityAndDragOnly(int i, const Vector3d& x, double r) const
     {
-        if (fluid.active || g.wallContacts[i] != 0)
+        if (g.wallContacts[i] != 0)
             return false;
         for (int w = 0; w < walls.count; ++w)
             if (!(r - walls.distance(w, x) <= 0.0)) // addWallContacts' test (NaN: touching)
