@@ -1,9 +1,10 @@
 // RecordStagingTest.cpp
-// The CPU pair pass's staging of grain positions (src/backends/RecordStaging.h): field f of the
-// c-th listed grain lands at stage[f * stride + c] unchanged, bit for bit, for every list
-// length (whole groups of eight and the tails, which repeat the last grain), grains listed in
-// any order and more than once; nothing past the list rounded up to eight is written. Compiled
-// with the library's -march=native, so that the test runs the same vector code.
+// The CPU pair pass's staging of grain records (src/backends/RecordStaging.h), positions (4
+// fields) and velocities (8): field f of the c-th listed grain lands at stage[f * stride + c]
+// unchanged, bit for bit, for every list length (whole groups of eight and the tails, which
+// repeat the last grain), grains listed in any order and more than once; nothing past the list
+// rounded up to eight is written. Compiled with the library's -march=native, so that the test
+// runs the same vector code.
 #include "backends/RecordStaging.h"
 
 #include <gtest/gtest.h>
@@ -12,16 +13,20 @@
 #include <random>
 #include <vector>
 
-using dem::detail::staging::stagePositions;
+using dem::detail::staging::stageRecords;
 
-TEST(RecordStaging, PositionsLandFieldByFieldUnchanged)
+namespace
+{
+
+template <int kFields>
+void checkStaging()
 {
     constexpr int kGrains = 100, kStride = 48;
     std::mt19937 random(7);
     std::uniform_real_distribution<double> value(-1.0, 1.0);
     std::uniform_int_distribution<int> grain(0, kGrains - 1);
-    std::vector<double> positions(4 * kGrains);
-    for (double& x : positions)
+    std::vector<double> records(kFields * kGrains);
+    for (double& x : records)
         x = value(random);
     const double sentinel = -12345.0;
     for (int count = 1; count <= 40; ++count)
@@ -29,21 +34,33 @@ TEST(RecordStaging, PositionsLandFieldByFieldUnchanged)
         std::vector<int> index(count);
         for (int& i : index)
             i = grain(random);
-        std::vector<double> stage(4 * kStride, sentinel);
-        stagePositions(positions.data(), index.data(), count, stage.data(), kStride);
+        std::vector<double> stage(kFields * kStride, sentinel);
+        stageRecords<kFields>(records.data(), index.data(), count, stage.data(), kStride);
         const int written = (count + 7) / 8 * 8;
-        for (int f = 0; f < 4; ++f)
+        for (int f = 0; f < kFields; ++f)
             for (int c = 0; c < kStride; ++c)
             {
                 const double got = stage[f * kStride + c];
                 if (c < written)
                 {
                     const int from = index[c < count ? c : count - 1]; // tails repeat the last
-                    EXPECT_EQ(std::memcmp(&got, &positions[4 * from + f], sizeof got), 0)
+                    EXPECT_EQ(std::memcmp(&got, &records[kFields * from + f], sizeof got), 0)
                         << "count " << count << ", field " << f << ", grain " << c;
                 }
                 else
                     EXPECT_EQ(got, sentinel) << "count " << count << ": wrote past the list";
             }
     }
+}
+
+} // namespace
+
+TEST(RecordStaging, PositionsLandFieldByFieldUnchanged)
+{
+    checkStaging<4>();
+}
+
+TEST(RecordStaging, VelocitiesLandFieldByFieldUnchanged)
+{
+    checkStaging<8>();
 }

@@ -55,9 +55,11 @@ struct OmpExecution
     //- given record begin + k + 1 (records stay in pair order; each thread's within its own
     //- range). Once the batch holds kBlockPairs pairs or more, or the range ends: the batch's
     //- grains and history copied into a contiguous scratch (scalar); the contact law
-    //- vectorised over it (grains' records loaded element by element: staging them as well
-    //- measured slower); the history copied back; both grains of each pair marked for
-    //- GatherKick (PairView::markMayTouch). Batches rather than blocks: a flowing bed has a
+    //- vectorised over it kChunk pairs at a time, both grains' position and velocity records
+    //- staged field by field first (PairGrainRecords; the loop then loads whole vectors, where
+    //- element loads and the extraction of each lane's index were half its instructions);
+    //- the history copied back; both grains of each pair marked for GatherKick
+    //- (PairView::markMayTouch). Batches rather than blocks: a flowing bed has a
     //- few pairs in a block that may touch, and a vector loop over so few ran at a quarter of
     //- its speed. Each pair's arithmetic is that of a plain loop over all pairs (vector and
     //- scalar iterations round alike, -ffp-contract=off), so neither the thread count nor the
@@ -69,16 +71,19 @@ struct OmpExecution
         constexpr int kHistory = 3 * kHistoryVectors;
         constexpr int B = kBlockPairs; // staging stride: field f of the k-th pair at f B + k
         constexpr int kBatch = 2 * B;  // a batch of B - 1 pairs and a block of B that may touch
+        constexpr int kChunk = 64;     // pairs of a batch staged at a time (in L1), stride kChunk
         const long n = kernel.pairs.count;
 #pragma omp parallel if (n >= kParallelThreshold)
         {
             const K local = kernel; // members become loop invariants
             const PairView& pairs = local.pairs;
             const double* positions = local.g.packedPositionRadius;
+            const double* velocities = local.g.packedVelocities;
             const long hs = pairs.historyStride();
             int pair[kBatch], owner[kBatch], partner[kBatch];
             double history[kHistory * kBatch];
             alignas(64) double positionI[4 * B], positionJ[4 * B]; // owners', partners'
+            alignas(64) double velocityI[8 * kChunk], velocityJ[8 * kChunk];
             const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
             const long begin = n * thread / threads, end = n * (thread + 1) / threads;
             long batchRecord = begin + 1; // the record of the batch's first pair
@@ -87,8 +92,8 @@ struct OmpExecution
             {
                 const int size = int(std::min<long>(B, end - first));
                 int* slot = pairs.contactSlot + first;
-                staging::stagePositions(positions, pairs.owner + first, size, positionI, B);
-                staging::stagePositions(positions, pairs.partner + first, size, positionJ, B);
+                staging::stageRecords<4>(positions, pairs.owner + first, size, positionI, B);
+                staging::stageRecords<4>(positions, pairs.partner + first, size, positionJ, B);
 #pragma omp simd
                 for (int k = 0; k < size; ++k)
                 {
@@ -115,9 +120,22 @@ struct OmpExecution
                     for (int v = 0; v < kHistory; ++v)
                         history[v * kBatch + c] = pairs.history[p + v * hs];
                 }
+                for (int c0 = 0; c0 < count; c0 += kChunk)
+                {
+                    const int size = std::min(kChunk, count - c0);
+                    staging::stageRecords<4>(positions, owner + c0, size, positionI, kChunk);
+                    staging::stageRecords<4>(positions, partner + c0, size, positionJ, kChunk);
+                    staging::stageRecords<8>(velocities, owner + c0, size, velocityI, kChunk);
+                    staging::stageRecords<8>(velocities, partner + c0, size, velocityJ, kChunk);
 #pragma omp simd
-                for (int c = 0; c < count; ++c)
-                    local.evaluate(owner[c], partner[c], history + c, kBatch, batchRecord + c);
+                    for (int c = 0; c < size; ++c)
+                    {
+                        const PairGrainRecords staged{positionI + c, positionJ + c, velocityI + c,
+                                                      velocityJ + c, kChunk};
+                        local.evaluate(owner[c0 + c], partner[c0 + c], staged, history + c0 + c,
+                                       kBatch, batchRecord + c0 + c);
+                    }
+                }
                 for (int c = 0; c < count; ++c)
                     for (int v = 0; v < kHistory; ++v)
                         pairs.history[pair[c] + v * hs] = history[v * kBatch + c];

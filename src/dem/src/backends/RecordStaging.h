@@ -1,11 +1,12 @@
 // RecordStaging.h
-// CPU backend only (GCC vector extensions): copies the positions and radii of the grains a
-// block of pairs names (GrainView::packedPositionRadius, 4 doubles per grain) into a staging
-// area field by field, so that the vectorised pair test reads contiguous vectors instead of
-// loading every field of every grain element by element. Eight grains at a time: each record
-// read as one 4-double vector and the 8 x 4 block transposed in registers (12 shuffles where
-// element loads took 32 loads and some 28 inserts; the shuffle port is the limit of both).
-// Copies values only: the test's arithmetic, and so every bit of the results, is unchanged.
+// CPU backend only (GCC vector extensions): copies the packed records of the grains a block of
+// pairs names (GrainView::packedPositionRadius, 4 doubles per grain; packedVelocities, 8) into
+// a staging area field by field, so that the vectorised pair test and contact law read
+// contiguous vectors instead of loading every field of every grain element by element. Eight
+// grains at a time: each 4-double part of a record read as one vector and the 8 x 4 block
+// transposed in registers (12 shuffles where element loads took 32 loads, some 28 inserts and
+// the extraction of eight indices per vector; the shuffle port is the limit of both).
+// Copies values only: the kernels' arithmetic, and so every bit of the results, is unchanged.
 #pragma once
 
 #include <cstring>
@@ -33,13 +34,14 @@ inline void storeLanes8(double* p, const Lanes8& v)
     std::memcpy(p, &v, sizeof v);
 }
 
-//- The 4-double records of grains index[0..7] (grain g's at records + 4 g) into
-//- rows[f * stride + 0..7], field f = 0..3.
-inline void transposeEight(const double* records, const int* index, double* rows, long stride)
+//- Fields 0..3 of the records of grains index[0..7] (grain g's at records + recordSize g)
+//- into rows[f * stride + 0..7], f = 0..3.
+inline void transposeEight(const double* records, long recordSize, const int* index, double* rows,
+                           long stride)
 {
     Lanes4 a[8];
     for (int k = 0; k < 8; ++k)
-        a[k] = loadLanes4(records + 4L * index[k]);
+        a[k] = loadLanes4(records + recordSize * index[k]);
     // Pairs of records side by side: grains k and k + 4 in one 8-lane vector.
     const Lanes8 z0 = __builtin_shufflevector(a[0], a[4], 0, 1, 2, 3, 4, 5, 6, 7);
     const Lanes8 z1 = __builtin_shufflevector(a[1], a[5], 0, 1, 2, 3, 4, 5, 6, 7);
@@ -59,18 +61,21 @@ inline void transposeEight(const double* records, const int* index, double* rows
                 __builtin_shufflevector(odd01, odd23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 3
 }
 
-//- Positions and radii (GrainView::packedPositionRadius, 4 doubles per grain) of grains
-//- index[0 .. count - 1] into stage[f * stride + c] (field f of the c-th grain). Rounds count
-//- up to a multiple of 8, repeating the last grain (stride must leave room for that).
-inline void stagePositions(const double* positions, const int* index, int count, double* stage,
-                           long stride)
+//- The kFields-double records of grains index[0 .. count - 1] (grain g's at records +
+//- kFields g; kFields a multiple of 4) into stage[f * stride + c] (field f of the c-th grain).
+//- Rounds count up to a multiple of 8, repeating the last grain (stride must leave room).
+template <int kFields>
+inline void stageRecords(const double* records, const int* index, int count, double* stage,
+                         long stride)
 {
+    static_assert(kFields % 4 == 0, "records are staged four fields at a time");
     for (int c = 0; c < count; c += 8)
     {
         int group[8];
         for (int k = 0; k < 8; ++k)
             group[k] = index[c + k < count ? c + k : count - 1];
-        transposeEight(positions, group, stage + c, stride);
+        for (int f = 0; f < kFields; f += 4)
+            transposeEight(records + f, kFields, group, stage + f * stride + c, stride);
     }
 }
 

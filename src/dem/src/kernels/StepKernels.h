@@ -324,26 +324,31 @@ struct PairForceKernel
     //- Pair p (which may touch): its loads into its own record, p + 1 (the GPU's pass).
     DEM_HD void operator()(long p) const
     {
-        evaluate(pairs.owner[p], pairs.partner[p], pairs.history + p, pairs.historyStride(), p + 1);
+        const long i = pairs.owner[p], j = pairs.partner[p];
+        const double *xr = g.packedPositionRadius, *vw = g.packedVelocities;
+        evaluate(i, j, PairGrainRecords{xr + 4 * i, xr + 4 * j, vw + 8 * i, vw + 8 * j, 1},
+                 pairs.history + p, pairs.historyStride(), p + 1);
     }
 
-    //- The pair of grains i < j that may touch: its history h[c * hs] (c < 3 kHistoryVectors)
-    //- read and written, its loads into record r. The CPU's pass calls it on a block's
-    //- pairs that may touch, their history copied into a contiguous scratch.
-    DEM_HD void evaluate(long i, long j, double* h, long hs, long r) const
+    //- The pair of grains i < j that may touch, their records read from grains: its history
+    //- h[c * hs] (c < 3 kHistoryVectors) read and written, its loads into record r. The CPU's
+    //- pass calls it on a batch of pairs that may touch, their grains' records staged and
+    //- their history copied into a contiguous scratch.
+    DEM_HD void evaluate(long i, long j, const PairGrainRecords& grains, double* h, long hs,
+                         long r) const
     {
         if constexpr (Shapes::kCapsules)
-            capsulePair(i, j, h, hs, r);
+            capsulePair(i, j, grains, h, hs, r);
         else
-            spherePair(i, j, h, hs, r);
+            spherePair(grains, h, hs, r);
     }
 
-    DEM_HD void spherePair(long i, long j, double* h, long hs, long r) const
+    DEM_HD void spherePair(const PairGrainRecords& grains, double* h, long hs, long r) const
     {
-        const double* xr = g.packedPositionRadius;
-        const double* vw = g.packedVelocities;
-        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
-        const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
+        const long s = grains.s;
+        const Vector3d xi = load(grains.positionI, 0, s), xj = load(grains.positionJ, 0, s);
+        const Vector3d d = box.separation(xi, xj);
+        const double ri = grains.positionI[3 * s], rj = grains.positionJ[3 * s];
         const double sumRadii = ri + rj;
         const double distance2 = d.squaredNorm();
         const double sumRadii2 = sumRadii * sumRadii;
@@ -365,11 +370,12 @@ struct PairForceKernel
         const long r0 = r * (kPairMajorLayout ? kReactionComponents : pairs.reactionPairStride);
         double* out = pairs.reaction;
         Vector3d history = load(h, 0, hs);
+        const double *vwI = grains.velocityI, *vwJ = grains.velocityJ;
         // j's image across a deforming periodic side moves with it (zero in a fixed box)
-        const Vector3d vj = load(vw, 8 * j) + box.imageVelocity(load(xr, 4 * i), load(xr, 4 * j));
-        const ContactLoads loads = sphereContact(law, n, overlap, ri, rj, load(vw, 8 * i), vj,
-                                                 load(vw, 8 * i + 4), load(vw, 8 * j + 4), history,
-                                                 ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
+        const Vector3d vj = load(vwJ, 0, s) + box.imageVelocity(xi, xj);
+        const ContactLoads loads = sphereContact(law, n, overlap, ri, rj, load(vwI, 0, s), vj,
+                                                 load(vwI, 4 * s, s), load(vwJ, 4 * s, s), history,
+                                                 ContactPair{ri, rj, vwI[3 * s], vwJ[3 * s]});
         // Select, then store unconditionally (conditional stores would not vectorise).
         double value[3 * kHistoryVectors + kReactionComponents];
         for (int c = 0; c < 3; ++c)
@@ -388,13 +394,14 @@ struct PairForceKernel
 
     //- Cores' closest points (CapsuleGeometry.h; a sphere's core is its centre), the contact
     //- at the middle of the overlap, the full torques on both grains.
-    DEM_HD void capsulePair(long i, long j, double* h, long hs, long r) const
+    DEM_HD void capsulePair(long i, long j, const PairGrainRecords& grains, double* h, long hs,
+                            long r) const
     {
-        const double* xr = g.packedPositionRadius;
-        const double* vw = g.packedVelocities;
+        const long s = grains.s;
         const double* ax = g.packedHalfAxis;
-        const Vector3d d = box.separation(load(xr, 4 * i), load(xr, 4 * j));
-        const double ri = xr[4 * i + 3], rj = xr[4 * j + 3];
+        const Vector3d xi = load(grains.positionI, 0, s), xj = load(grains.positionJ, 0, s);
+        const Vector3d d = box.separation(xi, xj);
+        const double ri = grains.positionI[3 * s], rj = grains.positionJ[3 * s];
         const CapsulePairGeometry geometry =
             capsulePairGeometry(d, load(ax, 4 * i), load(ax, 4 * j), ri, rj);
         const bool touching = geometry.touching; // bonded pairs never come here (mayTouch)
@@ -407,11 +414,12 @@ struct PairForceKernel
         const long r0 = r * pairs.reactionPairStride;
         double* out = pairs.reaction;
         Vector3d history = load(h, 0, hs);
-        const Vector3d vj = load(vw, 8 * j) + box.imageVelocity(load(xr, 4 * i), load(xr, 4 * j));
+        const double *vwI = grains.velocityI, *vwJ = grains.velocityJ;
+        const Vector3d vj = load(vwJ, 0, s) + box.imageVelocity(xi, xj);
         const PointContactLoads loads =
             pointContact(law, geometry.normal, geometry.overlap, geometry.offsetI, geometry.offsetJ,
-                         load(vw, 8 * i), vj, load(vw, 8 * i + 4), load(vw, 8 * j + 4), history,
-                         ContactPair{ri, rj, vw[8 * i + 3], vw[8 * j + 3]});
+                         load(vwI, 0, s), vj, load(vwI, 4 * s, s), load(vwJ, 4 * s, s), history,
+                         ContactPair{ri, rj, vwI[3 * s], vwJ[3 * s]});
         double value[3 * kHistoryVectors + kReactionComponents];
         for (int c = 0; c < 3; ++c)
         {

@@ -227,6 +227,17 @@ struct PairView
     }
 };
 
+//- The packed records of a pair's two grains as PairForceKernel reads them: field f of grain
+//- i's position record (x, y, z, r; GrainView::packedPositionRadius) at positionI[f * s], of
+//- its velocity record (v, 1/m, omega, 1/I; packedVelocities) at velocityI[f * s], and j's
+//- alike. In place (s = 1: the GPU's pass) or from a backend's staging of a batch of pairs,
+//- field by field (the CPU's: whole vectors instead of element loads).
+struct PairGrainRecords
+{
+    const double *positionI, *positionJ, *velocityI, *velocityJ;
+    long s;
+};
+
 //- Periodic box in x and y; z is never periodic. A periodic side may change its length at
 //- lengthRate (Parameters::boxLengthRate): the box is the one at the time of the positions.
 struct BoxView
