@@ -474,24 +474,32 @@ struct GatherKick
         const int firstIncoming = pairs.incomingStart[j] - owned;
         const int all = owned + pairs.incomingStart[j + 1] - pairs.incomingStart[j];
         if (__builtin_expect(pairs.anyMayTouch(j), 1))
+        {
+            // The sums in 4 lanes (Packed4d): a third of the instructions of 3-vectors.
+            Packed4d force4{force.x(), force.y(), force.z(), 0.0};
+            Packed4d torque4{torque.x(), torque.y(), torque.z(), 0.0};
             for (int k = 0; k < all; ++k)
             {
                 const bool own = k < owned;
                 const long p = own ? firstOwned + k : pairs.incomingPair[firstIncoming + k];
                 const double* loads = pairs.template loadsOf<Shapes::kReactionComponents>(p);
                 const double sign = own ? 1.0 : -1.0;
-                force += sign * Vector3d(loads[0], loads[cs], loads[2 * cs]);
+                force4 += sign * Packed4d{loads[0], loads[cs], loads[2 * cs], loads[3 * cs]};
                 if constexpr (Shapes::kCapsules)
                 {
                     const double* t = loads + (own ? 3 : 6) * cs;
-                    torque += Vector3d(t[0], t[cs], t[2 * cs]);
+                    torque4 += Packed4d{t[0], t[cs], t[2 * cs], 0.0};
                 }
                 else
                 {
                     const double lever = loads[(own ? 6 : 7) * cs];
-                    torque += lever * Vector3d(loads[3 * cs], loads[4 * cs], loads[5 * cs]);
+                    torque4 += lever *
+                               Packed4d{loads[3 * cs], loads[4 * cs], loads[5 * cs], loads[6 * cs]};
                 }
             }
+            force = firstThree(force4);
+            torque = firstThree(torque4);
+        }
         if constexpr (Shapes::kBonds)
             bonds.add(j, force, torque);
         if (flag == kFlagPrescribed) // the shear resistance, averaged over any interval
