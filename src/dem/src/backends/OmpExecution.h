@@ -120,15 +120,16 @@ struct OmpExecution
                     for (int v = 0; v < kHistory; ++v)
                         history[v * kBatch + c] = pairs.history[p + v * hs];
                 }
+                // The test's staging area is free again: the chunks' positions go there too.
                 for (int c0 = 0; c0 < count; c0 += kChunk)
                 {
-                    const int size = std::min(kChunk, count - c0);
-                    staging::stageRecords<4>(positions, owner + c0, size, positionI, kChunk);
-                    staging::stageRecords<4>(positions, partner + c0, size, positionJ, kChunk);
-                    staging::stageRecords<8>(velocities, owner + c0, size, velocityI, kChunk);
-                    staging::stageRecords<8>(velocities, partner + c0, size, velocityJ, kChunk);
+                    const int chunk = std::min(kChunk, count - c0);
+                    staging::stageRecords<4>(positions, owner + c0, chunk, positionI, kChunk);
+                    staging::stageRecords<4>(positions, partner + c0, chunk, positionJ, kChunk);
+                    staging::stageRecords<8>(velocities, owner + c0, chunk, velocityI, kChunk);
+                    staging::stageRecords<8>(velocities, partner + c0, chunk, velocityJ, kChunk);
 #pragma omp simd
-                    for (int c = 0; c < size; ++c)
+                    for (int c = 0; c < chunk; ++c)
                     {
                         const PairGrainRecords staged{positionI + c, positionJ + c, velocityI + c,
                                                       velocityJ + c, kChunk};
