@@ -138,19 +138,20 @@ struct GrainForceKernel
         if (fluid.active) // the true volume (a capsule's too); its core read only with a fluid
             force +=
                 fluid.force(i, v, grainVolume(r, Shapes::kCapsules ? g.coreHalfLength[i] : 0.0),
-                            Vector3d(gravity[0], gravity[1], gravity[2]));
+                            gravityVector());
         if constexpr (Shapes::kCapsules)
             addEndContacts(i, x, v, omega, r, force, torque);
         else
             addWallContacts(i, x, v, omega, r, force, torque);
     }
 
+    DEM_HD Vector3d gravityVector() const { return Vector3d(gravity[0], gravity[1], gravity[2]); }
+
     //- m g - c v of grain i at velocity v.
     DEM_HD Vector3d gravityAndDrag(int i, const Vector3d& v) const
     {
-        const Vector3d gvec(gravity[0], gravity[1], gravity[2]);
         const double mass = 1.0 / g.packedVelocities[8L * i + 3];
-        return mass * gvec - drag * v;
+        return mass * gravityVector() - drag * v;
     }
 
     //- Whether, without a fluid (GatherKick::freeFlightPossible checks that once per pass),
@@ -552,9 +553,8 @@ struct GatherKick
     //- touch in this pass and gravityAndDragOnly. In a flowing bed most grains.
     DEM_HD bool inFreeFlight(int j) const
     {
-        const double* xr = g.packedPositionRadius + 4L * j;
         return g.flag[j] == kFlagFree && !pairs.anyMayTouch(j) &&
-               grainLoads.gravityAndDragOnly(j, Vector3d(xr[0], xr[1], xr[2]), xr[3]);
+               grainLoads.gravityAndDragOnly(j, g.packedPosition(j), g.packedRadius(j));
     }
     //- Whether any grain may be inFreeFlight in this pass (else freeFlight is not to be called).
     DEM_HD bool freeFlightPossible() const
@@ -567,13 +567,12 @@ struct GatherKick
     DEM_HD double freeFlight(int j) const
     {
         const double* vw = g.packedVelocities + 8L * j;
-        const double* xr = g.packedPositionRadius + 4L * j;
-        Vector3d v(vw[0], vw[1], vw[2]), omega(vw[4], vw[5], vw[6]);
+        Vector3d v = g.packedVelocity(j), omega = g.packedAngularVelocity(j);
         const Vector3d force = grainLoads.gravityAndDrag(j, v);
         const Vector3d torque = Vector3d::Zero();
         kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
         kick(g, j, kFlagFree, 0.5 * dt, vw[3], vw[7], force, torque, v, omega);
-        return storeDrifted(j, Vector3d(xr[0], xr[1], xr[2]) + dt * v, v, omega);
+        return storeDrifted(j, g.packedPosition(j) + dt * v, v, omega);
     }
 
     //- The same for a capsule: translation as a sphere's, rotation from the global angular
