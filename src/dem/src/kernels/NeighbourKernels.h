@@ -67,13 +67,12 @@ struct CellGridView
                coordinate(x.z(), 2) * stride[2];
     }
 
-    //- Call visit(j) for every grain j in the cells around x (each cell once) whose index is
-    //- not below (side > 0) or not above (side < 0) that of x's own cell; side 0: all of them.
-    //- With the grains sorted by cell, the grains of higher index than one in x's cell lie in
-    //- the cells not below it, those of lower index in the cells not above it: a one-sided
-    //- search (NeighbourSearch::forEachNeighbour) skips about half of the 27 cells.
+    //- Call visit(j) for every grain j in the cells around x (each cell once) that can hold
+    //- grains of higher index than one in x's own cell (higher: the cells numbered not below
+    //- it) or of lower index (the cells not above it): the grains are sorted by cell, so a
+    //- one-sided search (NeighbourSearch::forEachNeighbour) skips about half of the 27 cells.
     template <class Visit>
-    DEM_HD void forEachNearbyGrain(const Vector3d& x, int side, Visit&& visit) const
+    DEM_HD void forEachNearbyGrain(const Vector3d& x, bool higher, Visit&& visit) const
     {
         int centre[3], first[3], last[3];
         for (int d = 0; d < 3; ++d)
@@ -97,7 +96,7 @@ struct CellGridView
                 {
                     const int cx = wrap(centre[0] + dx, 0), cy = wrap(centre[1] + dy, 1);
                     const int cell = cx * stride[0] + cy * stride[1] + (centre[2] + dz) * stride[2];
-                    if (side * (cell - own) < 0)
+                    if (higher ? cell < own : cell > own)
                         continue;
                     for (int j = cellStart[cell]; j < cellStart[cell + 1]; ++j)
                         visit(j);
@@ -212,7 +211,7 @@ struct NeighbourSearch
         const Vector3d x = position(i);
         const double ri = boundingRadius(radius, coreHalfLength, i);
         cells.forEachNearbyGrain(
-            x, higher ? 1 : -1,
+            x, higher,
             [&](int j)
             {
                 if (higher ? j <= i : j >= i)

@@ -145,6 +145,7 @@ struct GrainForceKernel
             addWallContacts(i, x, v, omega, r, force, torque);
     }
 
+    //- The gravitational acceleration g.
     DEM_HD Vector3d gravityVector() const { return Vector3d(gravity[0], gravity[1], gravity[2]); }
 
     //- m g - c v of grain i at velocity v.
