@@ -465,8 +465,10 @@ struct GatherKick
             return 0.0;
         Vector3d force, torque;
         grainLoads.add(j, force, torque);
-        // Pairs j owns, then pairs j is the partner of (open pairs read zero loads), in one
-        // loop: one hard-to-predict loop exit per grain instead of two. x + (-y) is x - y.
+        // Pairs j owns, then pairs j is the partner of (open pairs read zero loads). GCC
+        // splits the loop at k = owned into two tight loops; a single loop without a branch
+        // (masks for the owned/incoming choice) was slower (src/dem/README.md, Benchmark).
+        // x + (-y) is x - y.
         // Skipped where no pair of j may touch in this pass (then all its records are the
         // zero record): most grains of a flowing bed. A branch around the loop, expected
         // taken: a static bed has contacts nearly everywhere (a zero trip count instead cost
