@@ -61,10 +61,14 @@ struct CellGridView
         }
         return c < 0 ? 0 : (c >= n[d] ? n[d] - 1 : c);
     }
+    //- The number of the cell at cell coordinates (cx, cy, cz).
+    DEM_HD int cellAt(int cx, int cy, int cz) const
+    {
+        return cx * stride[0] + cy * stride[1] + cz * stride[2];
+    }
     DEM_HD int cellOf(const Vector3d& x) const
     {
-        return coordinate(x.x(), 0) * stride[0] + coordinate(x.y(), 1) * stride[1] +
-               coordinate(x.z(), 2) * stride[2];
+        return cellAt(coordinate(x.x(), 0), coordinate(x.y(), 1), coordinate(x.z(), 2));
     }
 
     //- Call visit(j) for every grain j in the cells around x (each cell once) that can hold
@@ -89,13 +93,13 @@ struct CellGridView
                 last[d] = centre[d] < n[d] - 1 ? 1 : 0;
             }
         }
-        const int own = centre[0] * stride[0] + centre[1] * stride[1] + centre[2] * stride[2];
+        const int own = cellAt(centre[0], centre[1], centre[2]);
         for (int dz = first[2]; dz <= last[2]; ++dz)
             for (int dy = first[1]; dy <= last[1]; ++dy)
                 for (int dx = first[0]; dx <= last[0]; ++dx)
                 {
-                    const int cx = wrap(centre[0] + dx, 0), cy = wrap(centre[1] + dy, 1);
-                    const int cell = cx * stride[0] + cy * stride[1] + (centre[2] + dz) * stride[2];
+                    const int cell =
+                        cellAt(wrap(centre[0] + dx, 0), wrap(centre[1] + dy, 1), centre[2] + dz);
                     if (higher ? cell < own : cell > own)
                         continue;
                     for (int j = cellStart[cell]; j < cellStart[cell + 1]; ++j)
