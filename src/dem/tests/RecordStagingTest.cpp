@@ -4,7 +4,8 @@
 // unchanged, bit for bit, for every list length (whole groups of eight and the tails, which
 // repeat the last grain), grains listed in any order and more than once; nothing past the list
 // rounded up to eight is written. Compiled with the library's -march=native, so that the test
-// runs the same vector code.
+// runs the same vector code; both transposes (512-bit and 256-bit registers) are checked
+// directly too, whichever one this target's stageRecords uses.
 #include "backends/RecordStaging.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,8 @@
 #include <vector>
 
 using dem::detail::staging::stageRecords;
+using dem::detail::staging::transposeEightIn256;
+using dem::detail::staging::transposeEightIn512;
 
 namespace
 {
@@ -53,7 +56,42 @@ void checkStaging()
     }
 }
 
+//- Fields first .. first + 3 of eight records (of recordSize doubles, listed in any order and
+//- one twice) into rows of a stride that is not a multiple of 4; nothing else written.
+template <class Transpose>
+void checkTranspose(Transpose transpose, int recordSize, int first)
+{
+    constexpr int kGrains = 12, kStride = 11;
+    std::vector<double> records(recordSize * kGrains);
+    for (std::size_t k = 0; k < records.size(); ++k)
+        records[k] = 0.1 * double(k) - 3.0;
+    const int index[8] = {5, 0, 11, 3, 3, 7, 1, 9};
+    const double sentinel = -12345.0;
+    std::vector<double> rows(4 * kStride, sentinel);
+    transpose(records.data() + first, recordSize, index, rows.data(), kStride);
+    for (int f = 0; f < 4; ++f)
+        for (int c = 0; c < kStride; ++c)
+        {
+            const double got = rows[f * kStride + c];
+            if (c < 8)
+                EXPECT_EQ(got, records[recordSize * index[c] + first + f])
+                    << "record size " << recordSize << ", field " << f << ", grain " << c;
+            else
+                EXPECT_EQ(got, sentinel) << "wrote past the eight grains";
+        }
+}
+
 } // namespace
+
+TEST(RecordStaging, BothTransposesMoveEightRecordsUnchanged)
+{
+    for (const int recordSize : {4, 8})
+        for (int first = 0; first < recordSize; first += 4)
+        {
+            checkTranspose(transposeEightIn512, recordSize, first);
+            checkTranspose(transposeEightIn256, recordSize, first);
+        }
+}
 
 TEST(RecordStaging, PositionsLandFieldByFieldUnchanged)
 {

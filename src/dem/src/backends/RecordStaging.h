@@ -4,8 +4,9 @@
 // a staging area field by field, so that the vectorised pair test and contact law read
 // contiguous vectors instead of loading every field of every grain element by element. Eight
 // grains at a time: each 4-double part of a record read as one vector and the 8 x 4 block
-// transposed in registers (12 shuffles where element loads took 32 loads, some 28 inserts and
-// the extraction of eight indices per vector; the shuffle port is the limit of both).
+// transposed in registers (with AVX-512 12 shuffles where element loads took 32 loads, some 28
+// inserts and the extraction of eight indices per vector; the shuffle port is the limit of
+// both), as two 4 x 4 blocks where the target has 256-bit registers only.
 // Copies values only: the kernels' arithmetic, and so every bit of the results, is unchanged.
 #pragma once
 
@@ -29,15 +30,19 @@ inline Lanes4 loadLanes4(const double* p)
     return v;
 }
 
+inline void storeLanes4(double* p, const Lanes4& v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
+
 inline void storeLanes8(double* p, const Lanes8& v)
 {
     std::memcpy(p, &v, sizeof v);
 }
 
-//- Fields 0..3 of the records of grains index[0..7] (grain g's at records + recordSize g)
-//- into rows[f * stride + 0..7], f = 0..3.
-inline void transposeEight(const double* records, long recordSize, const int* index, double* rows,
-                           long stride)
+//- With 512-bit registers (AVX-512): the 8 x 4 block in 12 shuffles of 8-lane vectors.
+inline void transposeEightIn512(const double* records, long recordSize, const int* index,
+                                double* rows, long stride)
 {
     Lanes4 a[8];
     for (int k = 0; k < 8; ++k)
@@ -59,6 +64,42 @@ inline void transposeEight(const double* records, long recordSize, const int* in
                 __builtin_shufflevector(even01, even23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 2
     storeLanes8(rows + 3 * stride,
                 __builtin_shufflevector(odd01, odd23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 3
+}
+
+//- With 256-bit registers only (AVX2): two 4 x 4 blocks, 8 shuffles each. GCC has no 8-lane
+//- vector there and splits transposeEightIn512's shuffles element by element through the
+//- stack: on an AMD EPYC without AVX-512 the pair pass took twice as long.
+inline void transposeEightIn256(const double* records, long recordSize, const int* index,
+                                double* rows, long stride)
+{
+    for (int half = 0; half < 8; half += 4)
+    {
+        Lanes4 a[4];
+        for (int k = 0; k < 4; ++k)
+            a[k] = loadLanes4(records + recordSize * index[half + k]);
+        // Fields 0 and 2 (even), 1 and 3 (odd) of grains 0, 1 and of grains 2, 3, interleaved.
+        const Lanes4 even01 = __builtin_shufflevector(a[0], a[1], 0, 4, 2, 6);
+        const Lanes4 odd01 = __builtin_shufflevector(a[0], a[1], 1, 5, 3, 7);
+        const Lanes4 even23 = __builtin_shufflevector(a[2], a[3], 0, 4, 2, 6);
+        const Lanes4 odd23 = __builtin_shufflevector(a[2], a[3], 1, 5, 3, 7);
+        double* row = rows + half;
+        storeLanes4(row, __builtin_shufflevector(even01, even23, 0, 1, 4, 5));              // 0
+        storeLanes4(row + stride, __builtin_shufflevector(odd01, odd23, 0, 1, 4, 5));       // 1
+        storeLanes4(row + 2 * stride, __builtin_shufflevector(even01, even23, 2, 3, 6, 7)); // 2
+        storeLanes4(row + 3 * stride, __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7));   // 3
+    }
+}
+
+//- Fields 0..3 of the records of grains index[0..7] (grain g's at records + recordSize g)
+//- into rows[f * stride + 0..7], f = 0..3, in the widest registers the target has.
+inline void transposeEight(const double* records, long recordSize, const int* index, double* rows,
+                           long stride)
+{
+#ifdef __AVX512F__
+    transposeEightIn512(records, recordSize, index, rows, stride);
+#else
+    transposeEightIn256(records, recordSize, index, rows, stride);
+#endif
 }
 
 //- The kFields-double records of grains index[0 .. count - 1] (grain g's at records +
