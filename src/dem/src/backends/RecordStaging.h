@@ -30,12 +30,9 @@ inline Lanes4 loadLanes4(const double* p)
     return v;
 }
 
-inline void storeLanes4(double* p, const Lanes4& v)
-{
-    std::memcpy(p, &v, sizeof v);
-}
-
-inline void storeLanes8(double* p, const Lanes8& v)
+//- Stores a vector (Lanes4 or Lanes8) at an address aligned to 8 bytes only.
+template <class Lanes>
+inline void storeLanes(double* p, const Lanes& v)
 {
     std::memcpy(p, &v, sizeof v);
 }
@@ -57,18 +54,19 @@ inline void transposeEightIn512(const double* records, long recordSize, const in
     const Lanes8 odd01 = __builtin_shufflevector(z0, z1, 1, 9, 3, 11, 5, 13, 7, 15);
     const Lanes8 even23 = __builtin_shufflevector(z2, z3, 0, 8, 2, 10, 4, 12, 6, 14);
     const Lanes8 odd23 = __builtin_shufflevector(z2, z3, 1, 9, 3, 11, 5, 13, 7, 15);
-    storeLanes8(rows, __builtin_shufflevector(even01, even23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 0
-    storeLanes8(rows + stride,
-                __builtin_shufflevector(odd01, odd23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 1
-    storeLanes8(rows + 2 * stride,
-                __builtin_shufflevector(even01, even23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 2
-    storeLanes8(rows + 3 * stride,
-                __builtin_shufflevector(odd01, odd23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 3
+    storeLanes(rows, __builtin_shufflevector(even01, even23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 0
+    storeLanes(rows + stride,
+               __builtin_shufflevector(odd01, odd23, 0, 1, 8, 9, 4, 5, 12, 13)); // field 1
+    storeLanes(rows + 2 * stride,
+               __builtin_shufflevector(even01, even23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 2
+    storeLanes(rows + 3 * stride,
+               __builtin_shufflevector(odd01, odd23, 2, 3, 10, 11, 6, 7, 14, 15)); // field 3
 }
 
 //- With 256-bit registers only (AVX2): two 4 x 4 blocks, 8 shuffles each. GCC has no 8-lane
 //- vector there and splits transposeEightIn512's shuffles element by element through the
-//- stack: on an AMD EPYC without AVX-512 the pair pass took twice as long.
+//- stack: on an AMD EPYC without AVX-512 the static benchmark ran at 0.54 of its speed with
+//- them (src/dem/README.md, Benchmark).
 inline void transposeEightIn256(const double* records, long recordSize, const int* index,
                                 double* rows, long stride)
 {
@@ -83,10 +81,10 @@ inline void transposeEightIn256(const double* records, long recordSize, const in
         const Lanes4 even23 = __builtin_shufflevector(a[2], a[3], 0, 4, 2, 6);
         const Lanes4 odd23 = __builtin_shufflevector(a[2], a[3], 1, 5, 3, 7);
         double* row = rows + half;
-        storeLanes4(row, __builtin_shufflevector(even01, even23, 0, 1, 4, 5));              // 0
-        storeLanes4(row + stride, __builtin_shufflevector(odd01, odd23, 0, 1, 4, 5));       // 1
-        storeLanes4(row + 2 * stride, __builtin_shufflevector(even01, even23, 2, 3, 6, 7)); // 2
-        storeLanes4(row + 3 * stride, __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7));   // 3
+        storeLanes(row, __builtin_shufflevector(even01, even23, 0, 1, 4, 5));              // 0
+        storeLanes(row + stride, __builtin_shufflevector(odd01, odd23, 0, 1, 4, 5));       // 1
+        storeLanes(row + 2 * stride, __builtin_shufflevector(even01, even23, 2, 3, 6, 7)); // 2
+        storeLanes(row + 3 * stride, __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7));   // 3
     }
 }
 
