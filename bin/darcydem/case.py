@@ -13,6 +13,7 @@ import os
 import re
 import shutil
 import subprocess
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -86,6 +87,34 @@ def usable_cores():
         return len(os.sched_getaffinity(0))
     except AttributeError:
         return os.cpu_count() or 1
+
+
+def default_jobs():
+    """Independent stages a study runs at once by default: one per core the
+    solvers' MPI ranks leave free (2 one-process stages on 2 cores)."""
+    return max(1, usable_cores() // ranks_override())
+
+
+def run_side_by_side(calls, jobs):
+    """Run the independent stages calls (each call(threads) -> result, threads
+    the DEM threads to set in its demProperties, None: the template's), jobs
+    at a time, each on its share of the cores; returns the results in the
+    order of calls. A stage's results do not depend on its thread count (the
+    DEM library's sums run in a fixed order), so they are those of one stage
+    at a time. Beds under a few thousand grains run their loops on one thread
+    anyway (src/dem/src/backends/OmpExecution.h), so two such stages on 2
+    cores take about as long as one."""
+    if jobs == 1 or len(calls) <= 1:
+        return [call(None) for call in calls]
+    threads = max(1, usable_cores() // min(jobs, len(calls)))
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(call, threads) for call in calls]
+        try:
+            return [f.result() for f in futures]
+        except BaseException:
+            for f in futures:  # the stages not started yet
+                f.cancel()
+            raise
 
 
 def ranks_override():

@@ -36,7 +36,7 @@ import sys
 
 import numpy as np
 
-from darcydem.case import Case
+from darcydem.case import Case, default_jobs, run_side_by_side
 from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp_lines
 from darcydem.smoothing import hanning_smooth
@@ -226,12 +226,16 @@ class Run:
 class SettlementStudy:
     def __init__(self, study_dir, size="quick", log=say,
                  preparation_viscosity=PREPARATION_VISCOSITY, strength_scale=None,
-                 bond_point=None, contract_y=False, preparation_rate=PREPARATION_RATE):
+                 bond_point=None, contract_y=False, preparation_rate=PREPARATION_RATE,
+                 jobs=None):
         if size not in SIZES:
             sys.exit(f"settlementStudy: unknown size '{size}'; valid: {' '.join(SIZES)}")
         self.s = dict(SIZES[size])
         self.size = size
         self.log = log
+        # settlement runs at once after the sample (run_side_by_side): by default one per
+        # core the solvers' ranks leave free
+        self.jobs = jobs or default_jobs()
         self.clock = StageClock("settlementStudy", log)
         self.dir = os.path.abspath(study_dir)
         self.stages = os.path.join(self.dir, "stages")
@@ -442,15 +446,17 @@ class SettlementStudy:
         self.results.setdefault("wallSeconds", {})[name] = seconds
         return seconds
 
-    def settle(self, nu, creep_off=None, strength_scale=None):
+    def settle(self, nu, creep_off=None, strength_scale=None, threads=None):
         """One settlement run; creep_off: the creep mechanism (shear, twist,
         bend) switched off in it; strength_scale: the bonds' strength scale
         during the settlement (the sample keeps the one it was prepared
-        with)."""
+        with); threads: its DEM threads (None: the template's)."""
         name = ("settle_nu%g" % nu + ("" if creep_off is None else "_no" + creep_off.title())
                 + ("" if strength_scale is None else "_strength%g" % strength_scale))
         c = self.stage(name, state_from=self.prepared)
         self.set_walls(c, moving=False)
+        if threads is not None:
+            c.set("constant/demProperties", "threads", threads)
         c.set("constant/demProperties", "bonds/creep/contactViscosity", "%g" % nu)
         if creep_off is not None:
             c.set("constant/demProperties", f"bonds/creep/{creep_off}", "no")
@@ -510,13 +516,21 @@ class SettlementStudy:
             self.log(f"settlementStudy: the sample of {relax}")
         else:
             self.prepare()
-        runs = [self.settle(nu) for nu in self.s["viscosities"]]
-        variants = [self.settle(min(self.s["viscosities"]), m) for m in creep_off]
+        # every settlement run starts from the sample: self.jobs at a time
+        lowest = min(self.s["viscosities"])
+        specs = ([(nu, None, None) for nu in self.s["viscosities"]]
+                 + [(lowest, m, None) for m in creep_off]
+                 + ([(lowest, m, weak_bonds) for m in [None] + list(creep_off)]
+                    if weak_bonds is not None else []))
+        if self.jobs > 1 and len(specs) > 1:
+            self.log(f"settlementStudy: {len(specs)} settlement runs, {self.jobs} at a time"
+                     " (--jobs)")
+        done = run_side_by_side([lambda threads, spec=spec: self.settle(*spec, threads=threads)
+                                 for spec in specs], self.jobs)
+        runs = done[:len(self.s["viscosities"])]
+        variants = done[len(runs):len(runs) + len(creep_off)]
         self.variants = variants
-        weak = []
-        if weak_bonds is not None:
-            weak = [self.settle(min(self.s["viscosities"]), m, weak_bonds)
-                    for m in [None] + list(creep_off)]
+        weak = done[len(runs) + len(creep_off):]
         self.results["lidStressExpected"] = LID_MASS * GRAVITY / (
             self.s["box"][0] * self.s["box"][1])
         self.plot(runs)
@@ -825,6 +839,10 @@ def main(argv):
     ap.add_argument("--contract-y", action="store_true",
                     help="contract the periodic y length too (boxLengthRate), as the paper"
                          " contracted all of space; else only x and z contract")
+    ap.add_argument("--jobs", type=int, default=None,
+                    help="settlement runs at once after the sample, each on its share of the"
+                         " cores (default: the cores over the ranks of -parallel, so two"
+                         " 1-thread runs on 2 cores); 1: one after the other")
     ap.add_argument("--preparation-sweep", action="store_true",
                     help="only the contraction, at several contact viscosities and"
                          " strain rates: bonds frozen and broken (settlementPreparation.png)")
@@ -837,13 +855,16 @@ def main(argv):
                  " strain rate must be < 0 1/s")
     if a.strength_scale is not None and not a.strength_scale > 0:
         sys.exit(f"settlementStudy: --strength-scale {a.strength_scale:g}: the scale must be > 0")
+    if a.jobs is not None and a.jobs < 1:
+        sys.exit(f"settlementStudy: --jobs {a.jobs}: give 1 or more runs at once")
     if a.weak_bonds is not None and not a.weak_bonds > 0:
         sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)
     study = SettlementStudy(a.study_dir, "paper" if a.paper else a.size,
                             preparation_viscosity=a.preparation_viscosity,
                             strength_scale=a.strength_scale, bond_point=a.bond_point,
-                            contract_y=a.contract_y, preparation_rate=a.preparation_rate)
+                            contract_y=a.contract_y, preparation_rate=a.preparation_rate,
+                            jobs=a.jobs)
     if a.preparation_sweep:
         study.preparation_sweep()
         return

@@ -114,14 +114,18 @@ def test_settlement_bond_point_names_the_valid_ones(tmp_path):
     assert not os.path.exists(tmp_path / "study" / "stages")
 
 
-def test_shear_jobs_must_be_positive(tmp_path):
-    """shearStudy --jobs 0 (no shear stage could run): one line naming the
-    option, before any folder is looked at or made."""
-    copy_study(tmp_path, "darcyDemFoam", "shear")
-    r = run(["shearStudy", "study", "--jobs", "0"], tmp_path)
+@pytest.mark.parametrize("script, solver, tutorial, message", [
+    ("shearStudy", "darcyDemFoam", "shear", "shearStudy: --jobs 0: give 1 or more stages at once"),
+    ("settlementStudy", "demFoam", "snowSettlement",
+     "settlementStudy: --jobs 0: give 1 or more runs at once")])
+def test_study_jobs_must_be_positive(tmp_path, script, solver, tutorial, message):
+    """shearStudy / settlementStudy --jobs 0 (no stage could run): one line
+    naming the option, before any folder is looked at or made."""
+    copy_study(tmp_path, solver, tutorial)
+    r = run([script, "study", "--jobs", "0"], tmp_path)
     print(r.stderr)
     assert r.returncode != 0 and "Traceback" not in r.stderr
-    assert r.stderr.strip() == "shearStudy: --jobs 0: give 1 or more stages at once"
+    assert r.stderr.strip() == message
     assert not os.path.exists(tmp_path / "study" / "stages")
 
 

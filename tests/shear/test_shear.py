@@ -15,7 +15,9 @@ References:
   permeable one (kc = 3.5e-13), whose friction while it dilates (strain
   0.02 to 0.1) stays close to the dry friction.
 - Rate: dry friction at two velocities in the quasi-static range (I = 5e-4
-  and 2.5e-4) agrees; in the impermeable rate series (mu_f x 1, 0.1, 0.01:
+  and 1e-3) agrees (mu(I) of GDR MiDi 2004 / Jop et al. 2006, mu_s 0.38,
+  mu_2 0.64, I_0 0.28, moves by 5e-4 between them: far below the bound, a
+  few hundredths); in the impermeable rate series (mu_f x 1, 0.1, 0.01:
   1, 10, 100 x slower) the minimum p rises with the falling equivalent
   velocity.
 - Velocity scaling: the p equation depends on mu_f and the shear rate only
@@ -116,7 +118,7 @@ def test_dry_friction_is_rate_independent(study):
     # |difference| within a two-sided 1e-3 quantile of the block-mean
     # standard errors; each SE comes from 8 blocks (7 degrees of freedom,
     # 14 for the pair), so Student's t: 4.14
-    a, b = study["dry"], study["dryHalfVelocity"]
+    a, b = study["dry"], study["dryDoubleVelocity"]
     err = math.hypot(a["steadyFrictionStdErr"], b["steadyFrictionStdErr"])
     diff = abs(a["steadyFriction"] - b["steadyFriction"])
     print(f"dry steady friction {a['steadyFriction']:.3f} (I = {a['inertialNumber']:.1e}) "
