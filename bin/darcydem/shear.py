@@ -46,6 +46,7 @@ import re
 import shutil
 import subprocess
 import sys
+
 import numpy as np
 
 from darcydem.case import Case, default_jobs, run_side_by_side
