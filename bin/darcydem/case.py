@@ -95,11 +95,12 @@ def default_jobs():
     return max(1, usable_cores() // ranks_override())
 
 
-def run_side_by_side(calls, jobs):
+def run_side_by_side(calls, jobs, log, what):
     """Run the independent stages calls (each call(threads) -> result, threads
     the DEM threads to set in its demProperties, None: the template's), jobs
     at a time, each on its share of the cores; returns the results in the
-    order of calls. A stage's results do not depend on its thread count (the
+    order of calls. When they run side by side, says so through log (what:
+    the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's results do not depend on its thread count (the
     DEM library's sums run in a fixed order), so they are those of one stage
     at a time. Beds under a few thousand grains run their loops on one thread
     anyway (src/dem/src/backends/OmpExecution.h), so two such stages on 2
@@ -107,6 +108,8 @@ def run_side_by_side(calls, jobs):
     if jobs == 1 or len(calls) <= 1:
         return [call(None) for call in calls]
     threads = max(1, usable_cores() // min(jobs, len(calls)))
+    log(f"{what}, {jobs} at a time, {threads} DEM thread{'s' if threads > 1 else ''} each"
+        " (--jobs)")
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(call, threads) for call in calls]
         try:

@@ -522,11 +522,9 @@ class SettlementStudy:
                  + [(lowest, m, None) for m in creep_off]
                  + ([(lowest, m, weak_bonds) for m in [None] + list(creep_off)]
                     if weak_bonds is not None else []))
-        if self.jobs > 1 and len(specs) > 1:
-            self.log(f"settlementStudy: {len(specs)} settlement runs, {self.jobs} at a time"
-                     " (--jobs)")
         done = run_side_by_side([lambda threads, spec=spec: self.settle(*spec, threads=threads)
-                                 for spec in specs], self.jobs)
+                                 for spec in specs], self.jobs, self.log,
+                                f"settlementStudy: {len(specs)} settlement runs")
         runs = done[:len(self.s["viscosities"])]
         variants = done[len(runs):len(runs) + len(creep_off)]
         self.variants = variants

@@ -463,11 +463,9 @@ class ShearStudy:
         sums run in a fixed order), so they are those of one at a time."""
         order = sorted(cases, key=lambda key: -self.shear_end(
             cases[key][1].get("velocity_factor", 1.0), cases[key][1].get("strain")))
-        if self.jobs > 1 and len(cases) > 1:
-            self.log(f"shearStudy: {len(cases)} shear stages, {self.jobs} at a time (--jobs)")
         results = run_side_by_side(
             [lambda threads, key=key: self.shear(cases[key][0], threads=threads, **cases[key][1])
-             for key in order], self.jobs)
+             for key in order], self.jobs, self.log, f"shearStudy: {len(cases)} shear stages")
         return dict(zip(order, results))
 
     def run(self, checks=False):
