@@ -5,7 +5,7 @@ Not a test (minutes per seed); its numbers are in tests/README.md.
 
 usage: python3 tests/shear/measure_noise.py SEED [SEED ...]
        python3 tests/shear/measure_noise.py SEED CASE   (dry, permeable, impermeable,
-                                                   impermeable_halfMu, impermeable_halfVelocity)
+                                          impermeable_halfMu, impermeable_eightfoldVelocity)
        (one case on the packing a first run prepared for SEED)
 (after `source etc/bashrc`; run at most two at a time on two cores)"""
 
@@ -26,7 +26,7 @@ def run_seed(seed):
 
 def run_case_from_prepared(seed, case):
     """One case (dry, permeable, impermeable, impermeable_halfMu,
-    impermeable_halfVelocity) on the packing that
+    impermeable_eightfoldVelocity) on the packing that
     run_seed prepared for this seed (its consolidate stage), so that the
     cases of one seed can run side by side."""
     s = ShearStudy.__new__(ShearStudy)
@@ -43,8 +43,8 @@ def run_case_from_prepared(seed, case):
     kwargs = {"dry": {}, "permeable": dict(kc=PERMEABLE_KC),
               "impermeable": dict(kc=IMPERMEABLE_KC),
               "impermeable_halfMu": dict(kc=IMPERMEABLE_KC, mu_factor=0.5, strain=rate),
-              "impermeable_halfVelocity": dict(kc=IMPERMEABLE_KC, velocity_factor=0.5,
-                                               strain=rate)}[case]
+              "impermeable_eightfoldVelocity": dict(kc=IMPERMEABLE_KC, mu_factor=1 / 16,
+                                                    velocity_factor=8.0, strain=rate)}[case]
     r = s.shear(case + "_parallel", **kwargs)
     with open(os.path.join(path, "results_%s.json" % case), "w") as f:
         json.dump(r, f, indent=2)

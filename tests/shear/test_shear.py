@@ -22,7 +22,9 @@ References:
   velocity.
 - Velocity scaling: the p equation depends on mu_f and the shear rate only
   through mu_f gammaDot (write it in terms of strain), so shearing at v with
-  mu_f/2 and at v/2 with mu_f agree (minimum p and minimum of the mean p).
+  mu_f/2 and at 8v with mu_f/16 agree while the grains stay quasi-static
+  (I = 5e-4 and 4e-3: mu(I) moves by 3e-3): compared is the bed-mean p
+  averaged while dilating (strain 0.02 to 0.1).
 Pressures are compared Hanning-smoothed over strain, as the paper smooths
 the friction: the raw extremes are single-cell, single-sample spikes of the
 grains' rattling.
@@ -58,7 +60,7 @@ K_TWO_SIDED = 3.29  # P(|N(0,1)| > 3.29) = 1e-3
 DRY_FRICTION_SD = 0.05        # dry steady friction (measured 0.036)
 LOG_P_RATIO_SD = 0.1          # ln of a ratio of two smoothed pressure minima (0.055)
 PERM_DRY_FRICTION_SD = 0.015  # permeable minus dry friction while dilating (rms 0.012)
-SCALING_SD = 0.04             # relative difference of the velocity-scaling pair (rms 0.033)
+SCALING_LN_SD = 0.1           # ln of the velocity-scaling pair's ratio of mean p (rms 0.076)
 
 
 @pytest.fixture(scope="module")
@@ -141,11 +143,20 @@ def test_impermeable_pressure_rises_with_slower_equivalent_velocity(study):
 
 
 def test_velocity_scaling_equivalence(study):
-    # 20 %: over K_TWO_SIDED * SCALING_SD, far below the factor 2 that a p
-    # equation not scaling with mu_f gammaDot would give
-    a, b = study["impermeableHalfMu"], study["impermeableHalfVelocity"]
+    # |ln ratio| of the mean p while dilating within K_TWO_SIDED noise SDs (0.33:
+    # a factor 1.39). A p equation in which mu_f and gammaDot do not enter as
+    # their product would see a factor 8 in one of them: at the rate series'
+    # p ~ (mu_f gammaDot)^0.53 (ln(p_x1 / p_x0.1) = 1.23) a factor 3 in p, ln 1.1.
+    # The extremes (smoothed minimum p and minimum of the mean p) are twice as
+    # noisy (rms of ln 0.13): printed, not asserted.
+    a, b = study["impermeableHalfMu"], study["impermeableEightfoldVelocity"]
     for key in ("pMinSmoothed", "pMeanSmoothedMin"):
-        rel = abs(a[key] - b[key]) / abs(b[key])
-        print(f"{key} at v with mu/2 {a[key]:.0f} Pa, at v/2 with mu {b[key]:.0f} Pa: "
-              f"relative difference {rel:.3f}")
-        assert rel < 0.2
+        print(f"{key} at v with mu/2 {a[key]:.0f} Pa, at 8v with mu/16 {b[key]:.0f} Pa: "
+              f"ln ratio {math.log(a[key] / b[key]):.3f} (not asserted)")
+    key = "pMeanWhileDilating"
+    ln_ratio = math.log(a[key] / b[key])
+    bound = K_TWO_SIDED * SCALING_LN_SD
+    print(f"{key} at v with mu/2 {a[key]:.0f} Pa (I = {a['inertialNumber']:.1e}), at 8v with "
+          f"mu/16 {b[key]:.0f} Pa (I = {b['inertialNumber']:.1e}): ln ratio {ln_ratio:.3f}, "
+          f"bound {bound:.3f}")
+    assert a[key] < 0 and b[key] < 0 and abs(ln_ratio) < bound
