@@ -38,11 +38,12 @@ least K = 3.09 noise standard deviations from the bound, so that chance
 flips it with probability below 1e-3 (one-sided normal quantile; 3.29 for
 a two-sided bound). Pressure minima vary by a common factor between
 trajectories while their ratios barely move, so they are compared as
-ratios. The friction differences between the saturated cases (impermeable
-above permeable: peak and while dilating; rate series: faster above
-slower) are 0.06 to 0.17 with a noise of the same size: printed, not
-asserted (a bed and strain large enough to resolve them cost more than
-this suite's budget)."""
+ratios. Impermeable above permeable friction while dilating (strain 0.02
+to 0.1) is asserted since seven trajectories put it 3.5 SD above zero; the
+other friction differences between the saturated cases (peak friction;
+rate series: faster above slower) are 0.06 to 0.17 with a noise of about
+half their size: printed, not asserted (a bed and strain large enough to
+resolve them cost more than this suite's budget)."""
 
 import json
 import math
@@ -58,8 +59,9 @@ K_TWO_SIDED = 3.29  # P(|N(0,1)| > 3.29) = 1e-3
 # rounded up (1.2 to 3 x the sample values) for the uncertainty of a
 # standard deviation estimated from 2 to 4 samples:
 DRY_FRICTION_SD = 0.05        # dry steady friction (measured 0.036)
-LOG_P_RATIO_SD = 0.1          # ln of a ratio of two smoothed pressure minima (0.055)
-PERM_DRY_FRICTION_SD = 0.015  # permeable minus dry friction while dilating (rms 0.012)
+LOG_P_RATIO_SD = 0.2          # ln of a ratio of two smoothed pressure minima (0.11-0.16)
+PERM_DRY_FRICTION_SD = 0.022  # permeable minus dry friction while dilating (rms 0.018)
+IMP_PERM_FRICTION_SD = 0.033  # impermeable minus permeable friction while dilating (0.027)
 SCALING_LN_SD = 0.1           # ln of the velocity-scaling pair's ratio of mean p (rms 0.076)
 
 
@@ -100,12 +102,23 @@ def test_impermeable_pressure_lower_than_permeable(study):
           f"{perm['pMaxSmoothed']:.0f} Pa")
     print(f"not asserted (within noise): peak friction (Hanning-smoothed) dry "
           f"{dry['peakFriction']:.3f}, permeable {perm['peakFriction']:.3f}, impermeable "
-          f"{imp['peakFriction']:.3f}; friction while dilating dry "
-          f"{dry['dilationPhaseFriction']:.3f}, permeable {perm['dilationPhaseFriction']:.3f},"
-          f" impermeable {imp['dilationPhaseFriction']:.3f}")
+          f"{imp['peakFriction']:.3f}")
     # impermeable at least twice as low: ln(ratio) is LN_RATIO_IMP_PERM
     # (mean of the trajectories), K_ONE_SIDED * LOG_P_RATIO_SD above ln 2 and more
     assert perm["pMinSmoothed"] < 0 and ratio > 2
+
+
+def test_impermeable_stronger_than_permeable_while_dilating(study):
+    # the seed paper's dilatant strengthening: suction in the impermeable bed
+    # raises the effective stress while it dilates. Seven trajectories: mean
+    # difference 0.115, sample SD 0.027; 0.115 is K_ONE_SIDED * IMP_PERM_FRICTION_SD
+    # above 0 and more (3.5 SD)
+    perm, imp, dry = study["permeable"], study["impermeable"], study["dry"]
+    diff = imp["dilationPhaseFriction"] - perm["dilationPhaseFriction"]
+    print(f"friction while dilating (strain 0.02-0.1) dry {dry['dilationPhaseFriction']:.3f}, "
+          f"permeable {perm['dilationPhaseFriction']:.3f}, impermeable "
+          f"{imp['dilationPhaseFriction']:.3f}: impermeable - permeable {diff:.3f}")
+    assert diff > 0
 
 
 def test_permeable_friction_follows_dry(study):
@@ -147,8 +160,8 @@ def test_velocity_scaling_equivalence(study):
     # a factor 1.39). A p equation in which mu_f and gammaDot do not enter as
     # their product would see a factor 8 in one of them: at the rate series'
     # p ~ (mu_f gammaDot)^0.53 (ln(p_x1 / p_x0.1) = 1.23) a factor 3 in p, ln 1.1.
-    # The extremes (smoothed minimum p and minimum of the mean p) are twice as
-    # noisy (rms of ln 0.13): printed, not asserted.
+    # The extremes (smoothed minimum p and minimum of the mean p) are noisier
+    # (rms of ln 0.13 against 0.076): printed, not asserted.
     a, b = study["impermeableHalfMu"], study["impermeableEightfoldVelocity"]
     for key in ("pMinSmoothed", "pMeanSmoothedMin"):
         print(f"{key} at v with mu/2 {a[key]:.0f} Pa, at 8v with mu/16 {b[key]:.0f} Pa: "
