@@ -100,11 +100,12 @@ def run_side_by_side(calls, jobs, log, what):
     the DEM threads to set in its demProperties, None: the template's), jobs
     at a time, each on its share of the cores; returns the results in the
     order of calls. When they run side by side, says so through log (what:
-    the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's results do not depend on its thread count (the
-    DEM library's sums run in a fixed order), so they are those of one stage
-    at a time. Beds under a few thousand grains run their loops on one thread
-    anyway (src/dem/src/backends/OmpExecution.h), so two such stages on 2
-    cores take about as long as one."""
+    the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's
+    results do not depend on its thread count (the DEM library's sums run in a
+    fixed order), so they are those of one stage at a time. Beds under a few
+    thousand grains run their loops on one thread anyway
+    (src/dem/src/backends/OmpExecution.h), so two such stages on 2 cores take
+    about as long as one."""
     if jobs == 1 or len(calls) <= 1:
         return [call(None) for call in calls]
     threads = max(1, usable_cores() // min(jobs, len(calls)))

@@ -76,6 +76,8 @@ def scaled_beta(kn):
 
 # Profiles p(z) per shear case, for the p(z, strain) maps (Fig. 11)
 PROFILES_PER_CASE = 100
+# the rate series: the impermeable shear again at these multiples of mu_f
+RATE_SERIES = (0.1, 0.01)
 
 # The fluid force models shearStudy offers (solidPhase/fluidForce/type); the
 # first is the template's and the default.
@@ -470,6 +472,31 @@ class ShearStudy:
              for key in order], self.jobs, self.log, f"shearStudy: {len(cases)} shear stages")
         return dict(zip(order, results))
 
+    def shear_cases(self, checks=False):
+        """run()'s shear cases {key: (stage name, shear() keywords)}, in the
+        order shear_all breaks ties in: the three shears, the rate series
+        (rate_series) and with checks the cases the shear test compares."""
+        # the rate series and the checks' velocity-scaling pair shear to rateStrain
+        rate = dict(kc=IMPERMEABLE_KC, strain=self.s["rateStrain"])
+        cases = {"permeable": ("permeable", dict(kc=PERMEABLE_KC)),
+                 "impermeable": ("impermeable", dict(kc=IMPERMEABLE_KC)),
+                 "dry": ("dry", {})}
+        for factor in RATE_SERIES if self.rate_series else ():
+            cases["mu%g" % factor] = ("impermeable_mu%g" % factor, dict(rate, mu_factor=factor))
+        if checks:
+            # twice, not half the velocity: I = 1e-3 is still quasi-static (mu(I) moves by
+            # about 5e-4 from 5e-4, far below the test's bound) and the stage costs a quarter
+            # of the half-velocity one, the longest of the test's shear stages
+            cases["dryDoubleVelocity"] = ("dry_double", dict(velocity_factor=2.0))
+            cases["impermeableHalfMu"] = ("impermeable_halfMu", dict(rate, mu_factor=0.5))
+            # the same mu_f v at eight times the velocity (mu_f/16), not at half the velocity:
+            # I = 4e-3 is still quasi-static (mu(I) moves by 3e-3 from I = 5e-4), the stage
+            # costs a sixteenth of the half-velocity one, and a p equation not scaling with
+            # mu_f gammaDot would see a factor 8, not 2 (tests/shear/test_shear.py)
+            cases["impermeableEightfoldVelocity"] = (
+                "impermeable_eightfoldVelocity", dict(rate, mu_factor=1 / 16, velocity_factor=8.0))
+        return cases
+
     def run(self, checks=False):
         """The study: packing, the three shears and (rate_series) the rate
         series; with checks also the cases the shear test compares beside
@@ -484,33 +511,15 @@ class ShearStudy:
         r["shearVelocity"] = self.shear_velocity()
         r["referenceViscosity"] = self.reference_viscosity()
         dry = reused and self.reused_dry()
-        # the rate series and the checks' velocity-scaling pair shear to rateStrain
-        rate = dict(kc=IMPERMEABLE_KC, strain=self.s["rateStrain"])
-        cases = {"permeable": ("permeable", dict(kc=PERMEABLE_KC)),
-                 "impermeable": ("impermeable", dict(kc=IMPERMEABLE_KC))}
-        if not dry:
-            cases["dry"] = ("dry", {})
-        series = (0.1, 0.01) if self.rate_series else ()
-        for factor in series:
-            cases["mu%g" % factor] = ("impermeable_mu%g" % factor, dict(rate, mu_factor=factor))
-        if checks:
-            # twice, not half the velocity: I = 1e-3 is still quasi-static (mu(I) moves by
-            # about 5e-4 from 5e-4, far below the test's bound) and the stage costs a quarter
-            # of the half-velocity one, the longest of the test's shear stages
-            cases["dryDoubleVelocity"] = ("dry_double", dict(velocity_factor=2.0))
-            cases["impermeableHalfMu"] = ("impermeable_halfMu", dict(rate, mu_factor=0.5))
-            # the same mu_f v at eight times the velocity (mu_f/16), not at half the velocity:
-            # I = 4e-3 is still quasi-static (mu(I) moves by 3e-3 from I = 5e-4), the stage
-            # costs a sixteenth of the half-velocity one, and a p equation not scaling with
-            # mu_f gammaDot would see a factor 8, not 2 (tests/shear/test_shear.py)
-            cases["impermeableEightfoldVelocity"] = (
-                "impermeable_eightfoldVelocity", dict(rate, mu_factor=1 / 16, velocity_factor=8.0))
+        cases = self.shear_cases(checks)
+        if dry:
+            del cases["dry"]
         done = self.shear_all(cases)
         r["dry"] = dry or done["dry"]
         r["permeable"], r["impermeable"] = done["permeable"], done["impermeable"]
         if self.rate_series:
             r["rate"] = {"1": r["impermeable"]}
-            for factor in series:
+            for factor in RATE_SERIES:
                 r["rate"]["%g" % factor] = done["mu%g" % factor]
         self.coupling_cost()
         if checks:

@@ -15,7 +15,7 @@ import sys
 
 from darcydem.case import TEST_RUNS, Case, copy_tutorial
 from darcydem.foamfiles import read_scalar_entry
-from darcydem.shear import IMPERMEABLE_KC, PERMEABLE_KC, ShearStudy
+from darcydem.shear import ShearStudy
 
 
 def run_seed(seed):
@@ -39,12 +39,7 @@ def run_case_from_prepared(seed, case):
     s.height = float(s.diagnostics(b)["wall"][-1])
     # the mesh of the consolidate stage
     s.cells_z = int(read_scalar_entry(b.file("system/blockMeshDict"), "nz"))
-    rate = s.s["rateStrain"]
-    kwargs = {"dry": {}, "permeable": dict(kc=PERMEABLE_KC),
-              "impermeable": dict(kc=IMPERMEABLE_KC),
-              "impermeable_halfMu": dict(kc=IMPERMEABLE_KC, mu_factor=0.5, strain=rate),
-              "impermeable_eightfoldVelocity": dict(kc=IMPERMEABLE_KC, mu_factor=1 / 16,
-                                                    velocity_factor=8.0, strain=rate)}[case]
+    kwargs = dict(s.shear_cases(checks=True).values())[case]
     r = s.shear(case + "_parallel", **kwargs)
     with open(os.path.join(path, "results_%s.json" % case), "w") as f:
         json.dump(r, f, indent=2)
