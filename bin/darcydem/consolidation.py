@@ -17,7 +17,8 @@
                the theory follows the case's fluidForce model (darcy:
                Terzaghi's effective stress; pressureGradient, eq. 12: the
                skeleton carries (1 - phi) of the gradient; analytic.skeleton_share);
-  5. the same with half the fluid (coupling) step.
+  5. the same with half the fluid (coupling) step (beside stage 4 where the
+               cores allow: run_side_by_side, --jobs).
 
 The comparisons: settlement and base pressure against Terzaghi and against
 the layered column (each mesh layer's measured E_oed, porosity and the
@@ -35,13 +36,14 @@ import json
 import os
 import shutil
 import subprocess
+import sys
 
 import numpy as np
 
 from darcydem.analytic import (consolidation_coefficient, instantaneous_settlement,
                                layered_consolidation, ramp_loaded_consolidation,
                                skeleton_share, undrained_pressure)
-from darcydem.case import Case
+from darcydem.case import Case, default_jobs, run_side_by_side
 from darcydem.cli import StageClock, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, read_columns, read_entry,
                                 read_internal_field, read_probes, read_scalar_entry)
@@ -108,8 +110,11 @@ def load_history(table):
 
 
 class Study:
-    def __init__(self, study_dir, log=say):
+    def __init__(self, study_dir, log=say, jobs=None):
         self.clock = StageClock("consolidationStudy", log)
+        self.log = log
+        # the two consolidation stages at once where the cores allow (results as one at a time)
+        self.jobs = jobs or default_jobs()
         self.dir = os.path.abspath(study_dir)
         self.stages = os.path.join(self.dir, "stages")
         self.template_root = os.path.dirname(self.dir)
@@ -329,8 +334,12 @@ class Study:
                               "fluxSpread": self.k_faces_relErr}
 
     # 4, 5 ---------------------------------------------------------------
-    def consolidate(self, name, dt, end):
+    def consolidate(self, name, dt, end, threads=None):
+        """Stage 4 or 5: the saturated load step at fluid step dt; threads: its
+        DEM threads (demProperties threads; None: the template's)."""
         c = self.stage(name, "darcyDemFoam", self.prepared)
+        if threads is not None:
+            c.set("constant/demProperties", "threads", threads)
         c.set("constant/demProperties", "walls/top/normalStress", load_history(self.load))
         c.set("constant/demProperties", "viscousDrag", QUASI_STATIC_DRAG)
         c.set("system/controlDict", "deltaT", dt)
@@ -370,8 +379,12 @@ class Study:
         results["theory"] = {"fluidForce": ff, "c_v": cv, "H_dr": H, "t(Tv=1)": H**2 / cv,
                              "p0_undrained": p0, "finalSettlement": s_inf}
         curves = {}
-        for name, dt in self.coupling_steps:
-            tw, wall, tp, p = self.consolidate(name, dt, end)
+        # both stages start from the prepared packing and depend on nothing else
+        runs = run_side_by_side(
+            [lambda threads, name=name, dt=dt: self.consolidate(name, dt, end, threads=threads)
+             for name, dt in self.coupling_steps], self.jobs, self.log,
+            f"consolidationStudy: {len(self.coupling_steps)} consolidation stages")
+        for (name, dt), (tw, wall, tp, p) in zip(self.coupling_steps, runs):
             Tv = cv * tw / H**2
             U = (wall[0] - wall) / s_inf
             Tp = cv * tp / H**2
@@ -545,9 +558,14 @@ def main(argv):
     ap.add_argument("study_dir", metavar="STUDY_DIR",
                     help="the template case (0/, constant/, system/), e.g. "
                          "tutorials/darcyDemFoam/consolidation")
+    ap.add_argument("--jobs", type=int, default=None,
+                    help="consolidation stages at once (default: one per core that the "
+                         "solvers' MPI ranks leave free; 1: one after the other, same results)")
     a = parse_study_args(ap, argv)
+    if a.jobs is not None and a.jobs < 1:
+        sys.exit(f"consolidationStudy: --jobs {a.jobs}: give 1 or more stages at once")
     require_folder("consolidationStudy", a.study_dir, TEMPLATE_FILES)
-    study = Study(a.study_dir)
+    study = Study(a.study_dir, jobs=a.jobs)
     results = study.run()
     out = study.plot()
     say(json.dumps(results, indent=2))

@@ -117,9 +117,11 @@ def test_settlement_bond_point_names_the_valid_ones(tmp_path):
 @pytest.mark.parametrize("script, solver, tutorial, message", [
     ("shearStudy", "darcyDemFoam", "shear", "shearStudy: --jobs 0: give 1 or more stages at once"),
     ("settlementStudy", "demFoam", "snowSettlement",
-     "settlementStudy: --jobs 0: give 1 or more runs at once")])
+     "settlementStudy: --jobs 0: give 1 or more runs at once"),
+    ("consolidationStudy", "darcyDemFoam", "consolidation",
+     "consolidationStudy: --jobs 0: give 1 or more stages at once")])
 def test_study_jobs_must_be_positive(tmp_path, script, solver, tutorial, message):
-    """shearStudy / settlementStudy --jobs 0 (no stage could run): one line
+    """shearStudy / settlementStudy / consolidationStudy --jobs 0 (no stage could run): one line
     naming the option, before any folder is looked at or made."""
     copy_study(tmp_path, solver, tutorial)
     r = run([script, "study", "--jobs", "0"], tmp_path)
