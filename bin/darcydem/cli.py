@@ -115,13 +115,23 @@ class ProgressReader:
         return self.line
 
 
+def add_jobs_option(parser, unit, help):
+    """`--jobs N`: how many of the study's independent stages (unit: what
+    the study calls them, e.g. "stages") run at once (darcydem.case
+    run_side_by_side; None: default_jobs). parse_study_args refuses N < 1."""
+    parser.add_argument("--jobs", type=int, default=None, help=help)
+    parser.set_defaults(jobs_unit=unit)
+
+
 def parse_study_args(parser, argv):
     """parser.parse_args(argv) with the option every study shares:
     `-parallel [N]` (N = 2 when omitted), spelt as OpenFOAM's solvers spell
     it, runs each solver of the study decomposed over N MPI ranks
     (decomposePar, mpirun -np N <solver> -parallel, reconstructPar: see
     DARCYDEM_RANKS in case.py), so that `./Allrun -parallel` of every
-    tutorial only passes its arguments on."""
+    tutorial only passes its arguments on. A `--jobs` of add_jobs_option
+    below 1 stops with one line naming the option, before any folder is
+    looked at."""
     from darcydem.case import RANKS_VARIABLE  # case.py imports nothing of ours back
 
     parser.add_argument(
@@ -133,4 +143,6 @@ def parse_study_args(parser, argv):
         if args.parallel < 1:
             parser.error(f"-parallel {args.parallel}: the rank count must be 1 or more")
         os.environ[RANKS_VARIABLE] = str(args.parallel)
+    if getattr(args, "jobs", None) is not None and args.jobs < 1:
+        sys.exit(f"{parser.prog}: --jobs {args.jobs}: give 1 or more {args.jobs_unit} at once")
     return args

@@ -36,7 +36,6 @@ import json
 import os
 import shutil
 import subprocess
-import sys
 
 import numpy as np
 
@@ -44,7 +43,7 @@ from darcydem.analytic import (consolidation_coefficient, instantaneous_settleme
                                layered_consolidation, ramp_loaded_consolidation,
                                skeleton_share, undrained_pressure)
 from darcydem.case import Case, default_jobs, run_side_by_side
-from darcydem.cli import StageClock, parse_study_args, require_folder, say
+from darcydem.cli import StageClock, add_jobs_option, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, read_columns, read_entry,
                                 read_internal_field, read_probes, read_scalar_entry)
 
@@ -558,12 +557,10 @@ def main(argv):
     ap.add_argument("study_dir", metavar="STUDY_DIR",
                     help="the template case (0/, constant/, system/), e.g. "
                          "tutorials/darcyDemFoam/consolidation")
-    ap.add_argument("--jobs", type=int, default=None,
+    add_jobs_option(ap, "stages",
                     help="consolidation stages at once (default: one per core that the "
                          "solvers' MPI ranks leave free; 1: one after the other, same results)")
     a = parse_study_args(ap, argv)
-    if a.jobs is not None and a.jobs < 1:
-        sys.exit(f"consolidationStudy: --jobs {a.jobs}: give 1 or more stages at once")
     require_folder("consolidationStudy", a.study_dir, TEMPLATE_FILES)
     study = Study(a.study_dir, jobs=a.jobs)
     results = study.run()

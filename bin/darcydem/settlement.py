@@ -37,7 +37,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case, default_jobs, run_side_by_side
-from darcydem.cli import StageClock, parse_study_args, require_folder, say
+from darcydem.cli import StageClock, add_jobs_option, parse_study_args, require_folder, say
 from darcydem.foamfiles import grain_files, read_columns, read_scalar_entry, read_vtp_lines
 from darcydem.smoothing import hanning_smooth
 
@@ -837,7 +837,7 @@ def main(argv):
     ap.add_argument("--contract-y", action="store_true",
                     help="contract the periodic y length too (boxLengthRate), as the paper"
                          " contracted all of space; else only x and z contract")
-    ap.add_argument("--jobs", type=int, default=None,
+    add_jobs_option(ap, "runs",
                     help="settlement runs at once after the sample, each on its share of the"
                          " cores (default: the cores over the ranks of -parallel, so two"
                          " 1-thread runs on 2 cores); 1: one after the other")
@@ -853,8 +853,6 @@ def main(argv):
                  " strain rate must be < 0 1/s")
     if a.strength_scale is not None and not a.strength_scale > 0:
         sys.exit(f"settlementStudy: --strength-scale {a.strength_scale:g}: the scale must be > 0")
-    if a.jobs is not None and a.jobs < 1:
-        sys.exit(f"settlementStudy: --jobs {a.jobs}: give 1 or more runs at once")
     if a.weak_bonds is not None and not a.weak_bonds > 0:
         sys.exit(f"settlementStudy: --weak-bonds {a.weak_bonds:g}: the scale must be > 0")
     require_folder("settlementStudy", a.study_dir, TEMPLATE_FILES)

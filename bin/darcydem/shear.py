@@ -50,7 +50,7 @@ import sys
 import numpy as np
 
 from darcydem.case import Case, default_jobs, run_side_by_side
-from darcydem.cli import StageClock, parse_study_args, require_folder, say
+from darcydem.cli import StageClock, add_jobs_option, parse_study_args, require_folder, say
 from darcydem.foamfiles import (GRAIN_DIAGNOSTICS, grain_files, read_columns, read_scalar_entry,
                                 read_vtp, time_dirs)
 from darcydem.smoothing import hanning_smooth
@@ -696,13 +696,11 @@ def main(argv):
                     help="take the packing and the dry shear from finished stages of an "
                     "earlier run of the same size (e.g. the default model's) instead of "
                     "running them again")
-    ap.add_argument("--jobs", type=int, default=None,
+    add_jobs_option(ap, "stages",
                     help="shear stages run at once after the packing, each on its share "
                     "of the cores (default: the cores over the ranks of -parallel, so "
                     "two 1-thread stages on 2 cores); 1: one after the other")
     a = parse_study_args(ap, argv)
-    if a.jobs is not None and a.jobs < 1:
-        sys.exit(f"shearStudy: --jobs {a.jobs}: give 1 or more stages at once")
     require_folder("shearStudy", a.study_dir, TEMPLATE_FILES)
     study = ShearStudy(a.study_dir, a.size, rate_series=not a.no_rate_series,
                        fluid_force=a.fluid_force, reuse=a.reuse_packing, jobs=a.jobs)
