@@ -34,7 +34,7 @@ struct OmpExecution
     static int threads() { return omp_get_max_threads(); }
     //- Below this many items a kernel runs on one thread: forking costs more than it saves,
     //- and on a loaded machine a descheduled thread would stall every barrier. 1024 was
-    //- tried (src/dem/README.md, Benchmark): faster on quiet runs, but a 600-grain coupled
+    //- tried (src/dem/bench/RECORD.md, "5 Dec 2026"): faster on quiet runs, but a 600-grain coupled
     //- shear stage then took 2-2.5 times as long in 3 of 5 runs.
     static constexpr int kParallelThreshold = 4096;
 

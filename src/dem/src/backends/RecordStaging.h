@@ -66,7 +66,7 @@ inline void transposeEightIn512(const double* records, long recordSize, const in
 //- With 256-bit registers only (AVX2): two 4 x 4 blocks, 8 shuffles each. GCC has no 8-lane
 //- vector there and splits transposeEightIn512's shuffles element by element through the
 //- stack: on an AMD EPYC without AVX-512 the static benchmark ran at 0.54 of its speed with
-//- them (src/dem/README.md, Benchmark).
+//- them (src/dem/bench/RECORD.md, "6 Dec 2026, morning").
 inline void transposeEightIn256(const double* records, long recordSize, const int* index,
                                 double* rows, long stride)
 {
