@@ -26,7 +26,7 @@ DEM = "constant/demProperties"
 START, FIRST_END, END, DT = 0.01, 0.02, 0.03, 1e-4
 
 PROGRESS = re.compile(r"^Progress: t = (\S+) s, (\d+) %, (\S+) particle-steps/s, "
-                      r"about (\d+) s left$", re.M)
+                      r"about (\d+) s left(?: \(.*\))?$", re.M)
 TIME = re.compile(r"^Time = (\S+)$", re.M)
 
 

@@ -429,6 +429,10 @@ int System::threadCount() const
 {
     return impl_->engine->threads();
 }
+ThreadUse System::threadUse() const
+{
+    return impl_->engine->threadUse();
+}
 const Parameters& System::parameters() const
 {
     return impl_->parameters;

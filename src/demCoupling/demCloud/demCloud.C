@@ -84,6 +84,13 @@ Foam::demCloud::demCloud(const fvMesh& mesh)
             settings_.checkTimeStep(*system_);
             Info<< "    backend " << system_->backendName() << ", "
                 << system_->threadCount() << " thread(s)";
+            if (system_->threadUse().adaptive)
+            {
+                // threads 0: each step on one thread or on all, whichever
+                // its timing finds faster (AdaptiveThreads.h)
+                Info<< " (adaptive: 1 or " << system_->threadCount()
+                    << " per step, whichever runs faster)";
+            }
             if (Pstream::parRun())
             {
                 Info<< " on each of " << Pstream::nProcs() << " ranks";
@@ -151,7 +158,15 @@ void Foam::demCloud::reportProgress()
     Info<< "Progress: t = " << runTime.timeName() << " s, "
         << label(100*fraction) << " %, "
         << rate.str().c_str() << " particle-steps/s, "
-        << "about " << label(left) << " s left" << endl;
+        << "about " << label(left) << " s left";
+    const dem::ThreadUse use = system_->threadUse();
+    if (use.adaptive && use.steps > 0)
+    {
+        Info<< " (" << std::to_string(use.stepsOnMost).c_str() << " of "
+            << std::to_string(use.steps).c_str() << " DEM steps on "
+            << use.most << " threads, the rest on 1)";
+    }
+    Info<< endl;
 }
 
 

@@ -91,6 +91,16 @@ struct BondCounts
     std::array<double, 4> intactCreep = {}, brokenCreep = {};
 };
 
+//- The CPU threads of the steps so far: `most` the threads a step may use (Parameters::threads,
+//- or OpenMP's default for 0); with threads 0 (adaptive) each step's team is one or most, chosen
+//- by timing both (probes: windows run with the other size; switches: probes that won).
+struct ThreadUse
+{
+    int most = 1;
+    bool adaptive = false;
+    long long steps = 0, stepsOnMost = 0, probes = 0, switches = 0;
+};
+
 struct SystemState
 {
     std::map<std::string, std::vector<double>> reals;

@@ -125,7 +125,8 @@ public:
     long long stepCount() const;
     double timeStep() const;
     std::string backendName() const; //!< "cpu" or "cuda"
-    int threadCount() const;         //!< CPU threads in use (1 for cuda)
+    int threadCount() const;         //!< CPU threads a step may use (1 for cuda)
+    ThreadUse threadUse() const;     //!< the steps' CPU teams so far (threads 0: adaptive)
     const Parameters& parameters() const;
 
     // ---- fluid coupling (doc/EQUATIONS.md 6-7) -------------------------------------------------

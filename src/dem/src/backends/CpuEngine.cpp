@@ -10,8 +10,6 @@ namespace detail
 
 std::unique_ptr<Engine> makeCpuEngine(const Parameters& parameters)
 {
-    if (parameters.threads > 0)
-        omp_set_num_threads(parameters.threads);
     return std::make_unique<EngineImpl<OmpExecution>>(parameters);
 }
 

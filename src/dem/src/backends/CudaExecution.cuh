@@ -11,6 +11,7 @@
 
 #include "backends/CudaCheck.cuh"
 #include "backends/DeviceMemoryCache.cuh"
+#include "dem/State.h"
 
 #include <thrust/reduce.h>
 #include <thrust/system/cuda/execution_policy.h>
@@ -68,7 +69,7 @@ public:
     template <class T>
     using Vector = thrust::cuda::vector<T>;
 
-    CudaExecution() = default;
+    explicit CudaExecution(int /*threads: the CPU's*/) {}
     CudaExecution(const CudaExecution&) = delete;
     CudaExecution& operator=(const CudaExecution&) = delete;
 
@@ -79,6 +80,10 @@ public:
     static constexpr bool kPairMajor = false;
     static const char* name() { return "cuda"; }
     static int threads() { return 1; }
+    //- The CPU's choice of its team size around each step (OmpExecution); nothing here.
+    static void stepBegins() {}
+    static void stepEnds() {}
+    static ThreadUse threadUse() { return ThreadUse{}; }
     static constexpr int kBlock = 128;
 
     template <class F>

@@ -2,11 +2,13 @@
 // CPU backend of the kernels: Thrust's OpenMP system for storage, sorting and scans, plain
 // OpenMP loops (static schedule) for the per-grain kernels. Results do not depend on the thread
 // count (sums run over fixed blocks), so a restarted run repeats the uninterrupted one bit for
-// bit. Stateless: the engine holds an instance (EngineImpl::exec_) only because the CUDA policy
-// keeps cached device memory.
+// bit. The engine's instance (EngineImpl::exec_) holds the choice of the team size from step
+// to step (AdaptiveThreads.h); the kernels' loops are static.
 #pragma once
 
+#include "backends/AdaptiveThreads.h"
 #include "backends/RecordStaging.h"
+#include "dem/State.h"
 #include "kernels/Views.h"
 
 #include <thrust/system/omp/execution_policy.h>
@@ -27,16 +29,40 @@ struct OmpExecution
     template <class T>
     using Vector = thrust::omp::vector<T>;
 
+    //- threads: Parameters::threads (0: OpenMP's default, and the team chosen step by step
+    //- between 1 and that; N > 0: N threads, always).
+    explicit OmpExecution(int threads)
+        : team_(threads > 0 ? threads : omp_get_max_threads(), threads == 0)
+    {
+        omp_set_num_threads(team_.team());
+    }
+
     static auto policy() { return thrust::omp::par; }
     //- Per-pair vectors stored pair by pair (see PairView).
     static constexpr bool kPairMajor = true;
     static const char* name() { return "cpu"; }
-    static int threads() { return omp_get_max_threads(); }
-    //- Below this many items a kernel runs on one thread: forking costs more than it saves,
-    //- and on a loaded machine a descheduled thread would stall every barrier. 1024 was
-    //- tried (src/dem/bench/RECORD.md, "5 Dec 2026"): faster on quiet runs, but a 600-grain coupled
-    //- shear stage then took 2-2.5 times as long in 3 of 5 runs.
-    static constexpr int kParallelThreshold = 4096;
+    //- The threads the run may use (the team of a step may be one, AdaptiveThreads).
+    int threads() const { return team_.most(); }
+    ThreadUse threadUse() const
+    {
+        return ThreadUse{team_.most(),        team_.adaptive(), team_.steps(),
+                         team_.stepsOnMost(), team_.probes(),   team_.switches()};
+    }
+    //- Around each step: the team for the step (omp_set_num_threads of the calling thread,
+    //- which every parallel region and Thrust call of the step then uses; set at every step,
+    //- as another System of the process may have set its own), and the step's time for the
+    //- choice of the next.
+    void stepBegins()
+    {
+        omp_set_num_threads(team_.team());
+        stepStart_ = omp_get_wtime();
+    }
+    void stepEnds() { team_.stepTook(omp_get_wtime() - stepStart_); }
+    //- Below this many items a kernel runs on one thread: forking costs more than it saves.
+    //- 4096 until 6 Dec 2026, when a bed of 1200 grains on two threads of a quiet AMD EPYC
+    //- was found 1.8 times as fast with 1024; on a loaded machine, or where a second thread
+    //- does not pay, the adaptive team (AdaptiveThreads.h) falls back to one thread.
+    static constexpr int kParallelThreshold = 1024;
 
     template <class F>
     static void forEach(int n, const F& f)
@@ -189,6 +215,10 @@ struct OmpExecution
             sum += s;
         return sum;
     }
+
+private:
+    AdaptiveThreads team_;
+    double stepStart_ = 0.0;
 };
 
 } // namespace detail

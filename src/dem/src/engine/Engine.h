@@ -51,6 +51,7 @@ public:
     }
     virtual BondData bonds() const { return BondData{}; }
     virtual BondCounts bondCounts() const { return BondCounts{}; }
+    virtual ThreadUse threadUse() const = 0;
     //- The largest bond stiffness k_ne A of the bonds present and of those formation may add
     //- (the critical time step); 0 without bonds.
     virtual double maximumBondStiffness() const { return 0.0; }

@@ -50,7 +50,7 @@ public:
     using Vec = typename Exec::template Vector<T>;
 
     explicit EngineImpl(const Parameters& p)
-        : params_(p), boxLengthAtBuild_{boxLength(0), boxLength(1)}
+        : exec_(p.threads), params_(p), boxLengthAtBuild_{boxLength(0), boxLength(1)}
     {
         grains_.setCapsulePath(p.bonds.enabled); // bonds take the capsule forms
         if (p.decomposition.rankCount() > 1)
@@ -147,6 +147,7 @@ public:
             // A pair across a deforming periodic side also comes closer by the box's change
             // since the last rebuild (0 in a fixed box: the plain skin/2 test)
             const double reach = halfSkin - 0.5 * boxChangeSinceBuild();
+            exec_.stepBegins();
             if (needRebuild_ || reach < 0.0 || moved2 > reach * reach)
             {
                 Exec::forEach(grains_.size(), UnpackGrains{grains_.view()});
@@ -159,6 +160,7 @@ public:
             computeForces(dt);
             const bool last = s + 1 == nSteps;
             moved2 = globalMax(gatherKick(dt, dt, !last));
+            exec_.stepEnds(); // the CPU's team for the next step (OmpExecution)
             stopIfNotFinite(moved2);
             wallsFinishStep(dt); // the walls' grain forces were summed up by GatherKick
             if (!last)
@@ -205,7 +207,8 @@ public:
     double time() const override { return time_; }
     long long stepCount() const override { return steps_; }
     std::string name() const override { return Exec::name(); }
-    int threads() const override { return Exec::threads(); }
+    int threads() const override { return exec_.threads(); }
+    ThreadUse threadUse() const override { return exec_.threadUse(); }
 
     void deposit(const UniformGrid& grid, double dtFluid, double* porosity,
                  double* predictedPorosity, double* meanVelocity,
@@ -596,7 +599,8 @@ private:
     }
 
     //- The backend's execution state (CUDA: cached temporary storage and scratch for the
-    //- reductions; the CPU's is empty). Mutable: read-back methods reduce too.
+    //- reductions; the CPU: the team size from step to step). Mutable: read-back methods
+    //- reduce too.
     mutable Exec exec_;
     Parameters params_;
     GrainStorage<Exec> grains_;
