@@ -102,10 +102,10 @@ def run_side_by_side(calls, jobs, log, what):
     order of calls. When they run side by side, says so through log (what:
     the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's
     results do not depend on its thread count (the DEM library's sums run in a
-    fixed order), so they are those of one stage at a time. Beds under a few
-    thousand grains run their loops on one thread anyway
-    (src/dem/src/backends/OmpExecution.h), so two such stages on 2 cores take
-    about as long as one."""
+    fixed order), so they are those of one stage at a time. Side by side each
+    stage gets a fixed share (threads 1 on 2 cores: the adaptive team of
+    threads 0 would probe the busy cores, src/dem/README.md, "Threads (CPU
+    backend)"); one at a time, the template's setting."""
     if jobs == 1 or len(calls) <= 1:
         return [call(None) for call in calls]
     threads = max(1, usable_cores() // min(jobs, len(calls)))
