@@ -5,8 +5,8 @@
 // two threads as on one on a quiet AMD EPYC, a 600-grain coupled stage 0.9 times as fast on an
 // Intel Xeon, and with another busy process on the two cores two threads ran at a half to a
 // third of one thread's speed (each barrier waits for a descheduled thread; src/dem/README.md,
-// "Threads (CPU backend)"). The results do not depend on the thread count (the sums run in a fixed order),
-// so a switch changes no bit of them.
+// "Threads (CPU backend)"). The results do not depend on the thread count (the sums run in a
+// fixed order), so a switch changes no bit of them.
 //
 // The policy: time the current team's steps over a window (at least kWindowSteps steps and
 // kWindowSeconds), then one window with the other team size (a probe); the faster per step is
