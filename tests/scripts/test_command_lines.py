@@ -222,8 +222,10 @@ def test_stage_progress_is_relayed_while_the_solver_runs():
     assert relayed, "no progress line while the solver ran"
     times = []
     for line in relayed:
+        # (threads 0: the adaptive team's count of steps on all threads after it)
         m = re.fullmatch(r"study: stage column: t = (\S+) s, (\d+) %, \S+ particle-steps/s, "
-                         r"about (\d+) s left", line)
+                         r"about (\d+) s left(?: \(\d+ of \d+ DEM steps on \d+ threads, "
+                         r"the rest on 1\))?", line)
         assert m, line
         times.append(float(m.group(1)))
     assert times == sorted(times) and 0 < times[0] and times[-1] <= 0.3

@@ -1,12 +1,12 @@
 // AdaptiveThreads.h
 // CPU backend only: how many threads a step's parallel loops use, chosen while the run goes on
 // between one and all that the run may use, by timing both. Which is faster depends on the
-// bed, the machine and what else runs on it: a bed of 1200 grains stepped 1.8 times as fast on
-// two threads as on one on a quiet AMD EPYC, a 600-grain coupled stage 0.9 times as fast on an
-// Intel Xeon, and with another busy process on the two cores two threads ran at a half to a
-// third of one thread's speed (each barrier waits for a descheduled thread; src/dem/README.md,
-// "Threads (CPU backend)"). The results do not depend on the thread count (the sums run in a
-// fixed order), so a switch changes no bit of them.
+// bed, the machine and what else runs on it: a bed of 1200 grains stepped 1.6-1.9 times as fast
+// on two threads as on one on a quiet AMD EPYC, while on an Intel Xeon two threads did not pay
+// in beds of 600-2500 grains, and with another busy process on the two cores two threads ran at
+// a quarter to a half of one thread's speed (each barrier waits for a descheduled thread;
+// src/dem/README.md, "Threads (CPU backend)"). The results do not depend on the thread count (the
+// sums run in a fixed order), so a switch changes no bit of them.
 //
 // The policy: time the current team's steps over a window (at least kWindowSteps steps and
 // kWindowSeconds), then one window with the other team size (a probe); the faster per step is
