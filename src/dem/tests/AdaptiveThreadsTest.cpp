@@ -35,14 +35,14 @@ TEST(AdaptiveThreads, FixedThreadCountIsKept)
     AdaptiveThreads fixed(2, false);
     run(fixed, 20000, [](long, int t) { return t == 2 ? 10 * kStep : kStep; });
     EXPECT_EQ(fixed.team(), 2);
-    EXPECT_EQ(fixed.probes(), 0);
-    EXPECT_EQ(fixed.stepsOnMost(), 20000);
+    EXPECT_EQ(fixed.use().probes, 0);
+    EXPECT_EQ(fixed.use().stepsOnMost, 20000);
 
     AdaptiveThreads single(1, true); // one thread: nothing to choose
-    EXPECT_FALSE(single.adaptive());
+    EXPECT_FALSE(single.use().adaptive);
     run(single, 1000, [](long, int) { return kStep; });
     EXPECT_EQ(single.team(), 1);
-    EXPECT_EQ(single.probes(), 0);
+    EXPECT_EQ(single.use().probes, 0);
 }
 
 TEST(AdaptiveThreads, KeepsAllThreadsWhereTheyAreFaster)
@@ -51,10 +51,10 @@ TEST(AdaptiveThreads, KeepsAllThreadsWhereTheyAreFaster)
     const long steps = 100000; // 100 s of the model
     run(team, steps, [](long, int t) { return t == 2 ? 0.55 * kStep : kStep; });
     EXPECT_EQ(team.chosen(), 2);
-    EXPECT_EQ(team.switches(), 0);
-    EXPECT_GT(team.probes(), 0);
+    EXPECT_EQ(team.use().switches, 0);
+    EXPECT_GT(team.use().probes, 0);
     // one window in kMaxHold + 2 once the holds have grown, the short early holds on top
-    EXPECT_GT(double(team.stepsOnMost()) / steps, 1.0 - 2.0 / AdaptiveThreads::kMaxHold);
+    EXPECT_GT(double(team.use().stepsOnMost) / steps, 1.0 - 2.0 / AdaptiveThreads::kMaxHold);
 }
 
 TEST(AdaptiveThreads, FallsBackToOneThreadWhereThatIsFaster)
@@ -63,8 +63,8 @@ TEST(AdaptiveThreads, FallsBackToOneThreadWhereThatIsFaster)
     const long steps = 100000;
     run(team, steps, [](long, int t) { return t == 2 ? 2.5 * kStep : kStep; });
     EXPECT_EQ(team.chosen(), 1);
-    EXPECT_EQ(team.switches(), 1); // at the first probe, and never back
-    EXPECT_LT(double(team.stepsOnMost()) / steps, 2.0 / AdaptiveThreads::kMaxHold);
+    EXPECT_EQ(team.use().switches, 1); // at the first probe, and never back
+    EXPECT_LT(double(team.use().stepsOnMost) / steps, 2.0 / AdaptiveThreads::kMaxHold);
 }
 
 TEST(AdaptiveThreads, FollowsAChangeOfTheLoad)
@@ -98,5 +98,5 @@ TEST(AdaptiveThreads, EqualTeamsDoNotSwitch)
     AdaptiveThreads team(4, true);
     run(team, 100000, [](long, int t) { return t == 4 ? 0.98 * kStep : kStep; });
     EXPECT_EQ(team.chosen(), 4);
-    EXPECT_EQ(team.switches(), 0);
+    EXPECT_EQ(team.use().switches, 0);
 }

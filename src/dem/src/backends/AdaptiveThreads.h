@@ -17,6 +17,8 @@
 // OpenMP, no clock): OmpExecution times the steps and sets the team.
 #pragma once
 
+#include "dem/State.h"
+
 #include <algorithm>
 
 namespace dem
@@ -33,30 +35,26 @@ public:
     static constexpr int kMinHold = 4, kMaxHold = 64;
 
     //- most: the threads the run may use; adaptive: choose between 1 and most (else most, always).
-    AdaptiveThreads(int most, bool adaptive)
-        : most_(std::max(most, 1)), current_(most_), adaptive_(adaptive && most_ > 1)
+    AdaptiveThreads(int most, bool adaptive) : current_(std::max(most, 1))
     {
+        use_.most = current_;
+        use_.adaptive = adaptive && use_.most > 1;
     }
 
-    int most() const { return most_; }
-    bool adaptive() const { return adaptive_; }
+    //- most, adaptive, and the counts of steps, probes and switches so far.
+    const ThreadUse& use() const { return use_; }
     //- The team size for the next step.
     int team() const { return phase_ == Phase::probe ? other() : current_; }
     //- The team size kept (team() is the other one during a probe).
     int chosen() const { return current_; }
-    //- Probes made and switches kept so far.
-    long probes() const { return probes_; }
-    long switches() const { return switches_; }
-    //- Steps run with all the threads (most) and in all.
-    long stepsOnMost() const { return stepsOnMost_; }
-    long steps() const { return steps_; }
 
-    //- The step just run with team() threads took seconds; returns the team size for the next.
+    //- The step just run with team() threads took seconds (read only when use().adaptive);
+    //- returns the team size for the next.
     int stepTook(double seconds)
     {
-        ++steps_;
-        stepsOnMost_ += team() == most_;
-        if (!adaptive_)
+        ++use_.steps;
+        use_.stepsOnMost += team() == use_.most;
+        if (!use_.adaptive)
             return team();
         ++windowSteps_;
         windowSeconds_ += seconds;
@@ -76,11 +74,11 @@ public:
             phase_ = Phase::probe;
             break;
         case Phase::probe:
-            ++probes_;
+            ++use_.probes;
             if (perStep < (1.0 - kMargin) * reference_)
             {
                 current_ = other();
-                ++switches_;
+                ++use_.switches;
                 hold_ = kMinHold;
             }
             else
@@ -100,17 +98,16 @@ private:
         probe
     };
 
-    int other() const { return current_ == 1 ? most_ : 1; }
+    int other() const { return current_ == 1 ? use_.most : 1; }
 
-    int most_, current_;
-    bool adaptive_;
+    ThreadUse use_;
+    int current_;
     Phase phase_ = Phase::measure; // the first probe after one window
     int hold_ = kMinHold / 2;      // doubled to kMinHold after the first probe that keeps
     int holdLeft_ = 0;
     int windowSteps_ = 0;
     double windowSeconds_ = 0.0;
     double reference_ = 0.0;
-    long probes_ = 0, switches_ = 0, stepsOnMost_ = 0, steps_ = 0;
 };
 
 } // namespace detail

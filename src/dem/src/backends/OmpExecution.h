@@ -42,12 +42,8 @@ struct OmpExecution
     static constexpr bool kPairMajor = true;
     static const char* name() { return "cpu"; }
     //- The threads the run may use (the team of a step may be one, AdaptiveThreads).
-    int threads() const { return team_.most(); }
-    ThreadUse threadUse() const
-    {
-        return ThreadUse{team_.most(),        team_.adaptive(), team_.steps(),
-                         team_.stepsOnMost(), team_.probes(),   team_.switches()};
-    }
+    int threads() const { return team_.use().most; }
+    const ThreadUse& threadUse() const { return team_.use(); }
     //- Around each step: the team for the step (omp_set_num_threads of the calling thread,
     //- which every parallel region and Thrust call of the step then uses; set at every step,
     //- as another System of the process may have set its own), and the step's time for the
@@ -55,9 +51,10 @@ struct OmpExecution
     void stepBegins()
     {
         omp_set_num_threads(team_.team());
-        stepStart_ = omp_get_wtime();
+        if (team_.use().adaptive)
+            stepStart_ = omp_get_wtime();
     }
-    void stepEnds() { team_.stepTook(omp_get_wtime() - stepStart_); }
+    void stepEnds() { team_.stepTook(team_.use().adaptive ? omp_get_wtime() - stepStart_ : 0.0); }
     //- Below this many items a kernel runs on one thread: forking costs more than it saves.
     //- 4096 until 6 Dec 2026, when a bed of 1200 grains on two threads of a quiet AMD EPYC
     //- was found 1.8 times as fast with 1024; on a loaded machine, or where a second thread
