@@ -86,7 +86,7 @@ FLUID_FORCES = ("pressureGradient", "darcy")
 # The wall time of a dry shear stage per simulated second, over a saturated one's: the quick
 # size's dry stage took 0.94 (AMD EPYC, 6 Dec 2026: 310 s against 319 and 343 s) and 0.95
 # (Intel Xeon, 5 Dec 2026: 215 s against 224 and 230 s) of the saturated ones' (no pressure
-# equation, no fluid force); the rate series' cost what the impermeable stage costs per
+# equation, no fluid force); the rate-series stages cost what the impermeable one costs per
 # simulated second. Used to order the stages that run side by side (shear_all).
 DRY_STEP_COST = 0.94
 
@@ -468,20 +468,21 @@ class ShearStudy:
         prepared packing, self.jobs at a time (they depend on nothing but
         the packing); returns {key: summary}. Side by side they start in the
         order that ends the soonest by their estimated cost (run_side_by_side):
-        the simulated time, a dry one's at DRY_STEP_COST of a saturated one's;
-        ties in the given order. With more than one job each stage's DEM runs
+        the simulated time, a dry one's at DRY_STEP_COST of a saturated one's
+        (one at a time: dearest first). With more than one job each stage's DEM runs
         on its share of the cores (demProperties threads): a stage's results
         do not depend on its thread count (the library's sums run in a fixed
         order), so they are those of one at a time."""
-        order = sorted(cases, key=lambda key: -self.shear_end(
-            cases[key][1].get("velocity_factor", 1.0), cases[key][1].get("strain")))
-        costs = [self.shear_end(cases[key][1].get("velocity_factor", 1.0),
-                                cases[key][1].get("strain"))
-                 * (1.0 if "kc" in cases[key][1] else DRY_STEP_COST) for key in order]
+        def cost(key):
+            keywords = cases[key][1]
+            end = self.shear_end(keywords.get("velocity_factor", 1.0), keywords.get("strain"))
+            return end * (1.0 if "kc" in keywords else DRY_STEP_COST)
+
+        order = sorted(cases, key=lambda key: -cost(key))  # one at a time: dearest first
         results = run_side_by_side(
             [lambda threads, key=key: self.shear(cases[key][0], threads=threads, **cases[key][1])
              for key in order], self.jobs, self.log, f"shearStudy: {len(cases)} shear stages",
-            costs)
+            [cost(key) for key in order])
         return dict(zip(order, results))
 
     def shear_cases(self, checks=False):
