@@ -100,7 +100,7 @@ def default_jobs():
 def run_side_by_side(calls, jobs, log, what, costs=None):
     """Run the independent stages calls (each call(threads) -> result, threads
     the DEM threads to set in its demProperties, None: the template's), jobs
-    at a time, each on its share of the cores; returns the results in the
+    at a time, each on its share of the cores (threads_per_stage); returns the results in the
     order of calls. When they run side by side, says so through log (what:
     the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's
     results do not depend on its thread count (the DEM library's sums run in a
@@ -113,7 +113,7 @@ def run_side_by_side(calls, jobs, log, what, costs=None):
     template's threads and the order of calls."""
     if jobs == 1 or len(calls) <= 1:
         return [call(None) for call in calls]
-    threads = max(1, usable_cores() // min(jobs, len(calls)))
+    threads = threads_per_stage(jobs, len(calls))
     log(f"{what}, {jobs} at a time, {threads} DEM thread{'s' if threads > 1 else ''} each"
         " (--jobs)")
     order = range(len(calls)) if costs is None else start_order(costs, jobs)
@@ -125,6 +125,14 @@ def run_side_by_side(calls, jobs, log, what, costs=None):
             for f in futures.values():  # the stages not started yet
                 f.cancel()
             raise
+
+
+def threads_per_stage(jobs, stages):
+    """DEM threads of each of the stages run jobs at a time: the cores shared
+    by the processes that run at once, each stage's MPI ranks counted
+    (DARCYDEM_RANKS), so that 2 stages of 2 ranks on 4 cores run 1 thread per
+    rank, not 2 (which would put 8 threads on 4 cores); at least 1."""
+    return max(1, usable_cores() // (min(jobs, stages) * ranks_override()))
 
 
 def makespan(costs, order, jobs):

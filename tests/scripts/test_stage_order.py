@@ -7,14 +7,17 @@ shear's five stages it is the best split of their costs over two workers
 0.94 for the dry one, and the two rate-series stages of 2.345 s: the dry
 stage beside the rate series ends at 3.674 + 2 x 2.345 = 8.364, where longest
 first leaves one rate-series stage alone at the end, 3.909 + 2 x 2.345 =
-8.599). Equal costs keep the given order."""
+8.599). Equal costs keep the given order. Each stage side by side gets its
+share of the cores, its MPI ranks counted (threads_per_stage): no more DEM
+threads in all than cores."""
 
 import itertools
 import random
 
 import pytest
 
-from darcydem.case import makespan, start_order
+import darcydem.case
+from darcydem.case import makespan, ranks_for_solvers, run_side_by_side, start_order
 
 
 def best_split(costs):
@@ -58,3 +61,20 @@ def test_equal_costs_keep_the_given_order():
     assert start_order([2.0, 2.0, 2.0, 2.0], 2) == [0, 1, 2, 3]
     # beyond the exhaustive search: longest first, ties in the given order
     assert start_order([1.0, 3.0, 1.0, 3.0], 2, exhaustive_up_to=2) == [1, 3, 0, 2]
+
+
+@pytest.mark.parametrize("cores, ranks, jobs, stages, threads", [
+    (2, 1, 2, 5, 1),   # the quick shear on 2 cores: two 1-thread stages
+    (4, 1, 2, 5, 2),
+    (4, 2, 2, 5, 1),   # 2 stages x 2 ranks x 1 thread on 4 cores (not 2 threads: 8 on 4)
+    (8, 2, 2, 5, 2),
+    (4, 1, 8, 3, 1),   # more jobs than stages: the stages share the cores
+    (4, 1, 4, 2, 2),
+    (2, 2, 2, 5, 1),   # oversubscribed by the ranks alone: still one thread
+])
+def test_side_by_side_stages_share_the_cores(monkeypatch, cores, ranks, jobs, stages, threads):
+    monkeypatch.setattr(darcydem.case, "usable_cores", lambda: cores)
+    with ranks_for_solvers(ranks):
+        got = run_side_by_side([lambda t: t] * stages, jobs, lambda message: None, "stages")
+    assert got == [threads] * stages
+    assert min(jobs, stages) * ranks * threads <= max(cores, min(jobs, stages) * ranks)
