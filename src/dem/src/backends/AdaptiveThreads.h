@@ -2,10 +2,11 @@
 // CPU backend only: how many threads a step's parallel loops use, chosen while the run goes on
 // between one and all that the run may use, by timing both. Which is faster depends on the
 // bed, the machine and what else runs on it: a bed of 1200 grains stepped 1.6-1.9 times as fast
-// on two threads as on one on a quiet AMD EPYC, while on an Intel Xeon two threads did not pay
-// in beds of 600-2500 grains, and with another busy process on the two cores two threads ran at
-// a quarter to a half of one thread's speed (each barrier waits for a descheduled thread;
-// src/dem/README.md, "Threads (CPU backend)"). The results do not depend on the thread count (the
+// on two threads as on one on a quiet AMD EPYC and 1.6 times on a quiet Intel Xeon, where two
+// threads had not paid in beds of 600-2500 grains as long as the per-grain passes stayed on one
+// thread; with another busy process on the two cores two threads ran at a quarter to a half of
+// one thread's speed (each barrier waits for a descheduled thread; src/dem/README.md, "Threads
+// (CPU backend)"). The results do not depend on the thread count (the
 // sums run in a fixed order), so a switch changes no bit of them.
 //
 // The policy: time the current team's steps over a window (at least kWindowSteps steps and
