@@ -91,10 +91,16 @@ def usable_cores():
         return os.cpu_count() or 1
 
 
+def cores_per_rank(ranks):
+    """The usable cores over a solver's MPI ranks, at least 1: the threads of
+    one process of a stage that has the machine to itself."""
+    return max(1, usable_cores() // ranks)
+
+
 def default_jobs():
     """Independent stages a study runs at once by default: one per core the
     solvers' MPI ranks leave free (2 one-process stages on 2 cores)."""
-    return max(1, usable_cores() // ranks_override())
+    return cores_per_rank(ranks_override())
 
 
 def run_side_by_side(calls, jobs, log, what, costs=None):
@@ -132,7 +138,7 @@ def threads_per_stage(jobs, stages):
     by the processes that run at once, each stage's MPI ranks counted
     (DARCYDEM_RANKS), so that 2 stages of 2 ranks on 4 cores run 1 thread per
     rank, not 2 (which would put 8 threads on 4 cores); at least 1."""
-    return max(1, usable_cores() // (min(jobs, stages) * ranks_override()))
+    return max(1, cores_per_rank(ranks_override()) // min(jobs, stages))
 
 
 def makespan(costs, order, jobs):
@@ -255,7 +261,7 @@ class Case:
             command = [mpirun, "-np", str(self.ranks), "--oversubscribe", *command, "-parallel"]
             env = dict(os.environ, **MPI_ENVIRONMENT)
             # the cores shared among the ranks, unless set
-            env.setdefault("OMP_NUM_THREADS", str(max(1, usable_cores() // self.ranks)))
+            env.setdefault("OMP_NUM_THREADS", str(cores_per_rank(self.ranks)))
         log = self.file("log." + app)
         with open(log, "w") as out:
             rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT, env=env)

@@ -478,11 +478,12 @@ class ShearStudy:
             end = self.shear_end(keywords.get("velocity_factor", 1.0), keywords.get("strain"))
             return end * (1.0 if "kc" in keywords else DRY_STEP_COST)
 
-        order = sorted(cases, key=lambda key: -cost(key))  # one at a time: dearest first
+        costs = {key: cost(key) for key in cases}
+        order = sorted(cases, key=lambda key: -costs[key])  # one at a time: dearest first
         results = run_side_by_side(
             [lambda threads, key=key: self.shear(cases[key][0], threads=threads, **cases[key][1])
              for key in order], self.jobs, self.log, f"shearStudy: {len(cases)} shear stages",
-            [cost(key) for key in order])
+            [costs[key] for key in order])
         return dict(zip(order, results))
 
     def shear_cases(self, checks=False):

@@ -6,8 +6,8 @@
 // threads had not paid in beds of 600-2500 grains as long as the per-grain passes stayed on one
 // thread; with another busy process on the two cores two threads ran at a quarter to a half of
 // one thread's speed (each barrier waits for a descheduled thread; src/dem/README.md, "Threads
-// (CPU backend)"). The results do not depend on the thread count (the
-// sums run in a fixed order), so a switch changes no bit of them.
+// (CPU backend)"). The results do not depend on the thread count (the sums run in a fixed
+// order), so a switch changes no bit of them.
 //
 // The policy: time the current team's steps over a window (at least kWindowSteps steps and
 // kWindowSeconds), then one window with the other team size (a probe); the faster per step is
