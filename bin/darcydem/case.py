@@ -106,14 +106,14 @@ def default_jobs():
 def run_side_by_side(calls, jobs, log, what, costs=None):
     """Run the independent stages calls (each call(threads) -> result, threads
     the DEM threads to set in its demProperties, None: the template's), jobs
-    at a time, each on its share of the cores (threads_per_stage); returns the results in the
-    order of calls. When they run side by side, says so through log (what:
-    the study's name for them, e.g. "shearStudy: 8 shear stages"). A stage's
-    results do not depend on its thread count (the DEM library's sums run in a
-    fixed order), so they are those of one stage at a time. Side by side each
-    stage gets a fixed share (threads 1 on 2 cores: the adaptive team of
-    threads 0 would probe the busy cores, src/dem/README.md, "Threads (CPU
-    backend)"). costs (estimated, one per call, any unit): the stages
+    at a time, each on its share of the cores (threads_per_stage); returns the
+    results in the order of calls. When they run side by side, says so through
+    log (what: the study's name for them, e.g. "shearStudy: 8 shear stages").
+    A stage's results do not depend on its thread count (the DEM library's
+    sums run in a fixed order), so they are those of one stage at a time. Side
+    by side each stage gets a fixed share (threads 1 on 2 cores: the adaptive
+    team of threads 0 would probe the busy cores, src/dem/README.md, "Threads
+    (CPU backend)"). costs (estimated, one per call, any unit): the stages
     start in the order that ends soonest on jobs workers if they cost that
     (start_order); without, in the order of calls. One at a time, the
     template's threads and the order of calls."""
